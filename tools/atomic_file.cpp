@@ -1,0 +1,148 @@
+#include "tools/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+
+#include <fmt/format.h>
+
+namespace slide::tools {
+
+namespace {
+
+std::string errno_text(int err) { return std::generic_category().message(err); }
+
+// Closes a POSIX file descriptor on scope exit unless released.
+struct Fd {
+  int fd = -1;
+  explicit Fd(int f) : fd(f) {}
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+  // Closes now and reports the error code (0 on success).
+  int close_now() {
+    int rc = 0;
+    if (fd >= 0 && ::close(fd) != 0) rc = errno;
+    fd = -1;
+    return rc;
+  }
+};
+
+void remove_quietly(const std::filesystem::path& p) {
+  std::error_code ec;
+  std::filesystem::remove(p, ec);
+}
+
+void fsync_directory(const std::filesystem::path& dir) {
+  // Best effort: makes the rename durable; some file systems refuse fsync on folders.
+  Fd d(::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (d.fd >= 0) (void)::fsync(d.fd);
+}
+
+}  // namespace
+
+std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
+  std::filesystem::path tmp = path;
+  tmp += fmt::format(".tmp.{}", static_cast<long>(::getpid()));
+  return tmp;
+}
+
+void commit_temporary_file(const std::filesystem::path& tmp, const std::filesystem::path& path) {
+  {
+    Fd f(::open(tmp.c_str(), O_RDONLY | O_CLOEXEC));
+    if (f.fd < 0) {
+      const int err = errno;
+      remove_quietly(tmp);
+      throw std::runtime_error(
+          fmt::format("cannot open '{}' for fsync: {}", tmp.string(), errno_text(err)));
+    }
+    if (::fsync(f.fd) != 0) {
+      const int err = errno;
+      f.close_now();
+      remove_quietly(tmp);
+      throw std::runtime_error(
+          fmt::format("cannot fsync '{}': {}", tmp.string(), errno_text(err)));
+    }
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    remove_quietly(tmp);
+    throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", tmp.string(),
+                                         path.string(), errno_text(err)));
+  }
+  fsync_directory(path.parent_path());
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  const std::filesystem::path tmp = temporary_path_for(path);
+  Fd f(::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
+  if (f.fd < 0) {
+    const int err = errno;
+    throw std::runtime_error(fmt::format("cannot create '{}' (writing '{}'): {}", tmp.string(),
+                                         path.string(), errno_text(err)));
+  }
+  auto fail = [&](const char* what, int err) {
+    f.close_now();
+    remove_quietly(tmp);
+    throw std::runtime_error(
+        fmt::format("cannot {} '{}' (writing '{}'): {}", what, tmp.string(), path.string(),
+                    errno_text(err)));
+  };
+  const char* p = content.data();
+  size_t left = content.size();
+  while (left > 0) {
+    const ssize_t w = ::write(f.fd, p, left);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      fail("write", errno);
+    }
+    p += w;
+    left -= static_cast<size_t>(w);
+  }
+  if (::fsync(f.fd) != 0) fail("fsync", errno);
+  if (const int err = f.close_now(); err != 0) {
+    remove_quietly(tmp);
+    throw std::runtime_error(fmt::format("cannot close '{}' (writing '{}'): {}", tmp.string(),
+                                         path.string(), errno_text(err)));
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    remove_quietly(tmp);
+    throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", tmp.string(),
+                                         path.string(), errno_text(err)));
+  }
+  fsync_directory(path.parent_path());
+}
+
+CsvWriter::CsvWriter(std::filesystem::path path, std::vector<std::string> columns)
+    : path_(std::move(path)), columns_(std::move(columns)) {
+  for (size_t i = 0; i < columns_.size(); ++i) {
+    if (i > 0) text_ += ',';
+    text_ += columns_[i];
+  }
+  text_ += '\n';
+}
+
+void CsvWriter::add_row(std::span<const double> values) {
+  if (values.size() != columns_.size()) {
+    throw std::invalid_argument(fmt::format("CsvWriter '{}': row has {} values, expected {}",
+                                            path_.string(), values.size(), columns_.size()));
+  }
+  auto out = std::back_inserter(text_);
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) text_ += ',';
+    fmt::format_to(out, "{:.17g}", values[i]);
+  }
+  text_ += '\n';
+  ++rows_;
+}
+
+void CsvWriter::flush() const { write_file_atomically(path_, text_); }
+
+}  // namespace slide::tools

@@ -1,0 +1,288 @@
+#include "tools/snapshot_writer.hpp"
+
+#include <hdf5.h>
+
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "tools/atomic_file.hpp"
+
+namespace slide::tools {
+
+namespace {
+
+// Owns one HDF5 identifier and closes it with the matching H5?close on scope exit.
+class H5Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  H5Handle() = default;
+  H5Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+  H5Handle(H5Handle&& o) noexcept : id_(std::exchange(o.id_, H5I_INVALID_HID)), closer_(o.closer_) {}
+  ~H5Handle() {
+    if (id_ >= 0) closer_(id_);
+  }
+  hid_t get() const { return id_; }
+  // Closes now; returns the HDF5 status (negative on failure).
+  herr_t close() {
+    herr_t rc = 0;
+    if (id_ >= 0) rc = closer_(std::exchange(id_, H5I_INVALID_HID));
+    return rc;
+  }
+
+ private:
+  hid_t id_ = H5I_INVALID_HID;
+  Closer closer_ = nullptr;
+};
+
+[[noreturn]] void fail(const std::filesystem::path& file, std::string_view what) {
+  throw std::runtime_error(fmt::format("HDF5 error writing '{}': {}", file.string(), what));
+}
+
+H5Handle check(hid_t id, H5Handle::Closer closer, const std::filesystem::path& file,
+               std::string_view what) {
+  if (id < 0) fail(file, what);
+  return H5Handle(id, closer);
+}
+
+void check(herr_t rc, const std::filesystem::path& file, std::string_view what) {
+  if (rc < 0) fail(file, what);
+}
+
+// Removes a temporary file unless dismissed (used when a write throws midway).
+struct TempGuard {
+  std::filesystem::path path;
+  bool active = true;
+  ~TempGuard() {
+    if (active) {
+      std::error_code ec;
+      std::filesystem::remove(path, ec);
+    }
+  }
+};
+
+H5Handle create_file(const std::filesystem::path& path) {
+  return check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, path,
+               "cannot create file");
+}
+
+// Writes a contiguous dataset `name` of rank 1 (cols == 0) or 2 (rows x cols).
+void write_dataset(hid_t file, const std::filesystem::path& path, const char* name,
+                   hid_t file_type, hid_t mem_type, const void* data, size_t rows,
+                   size_t cols = 0) {
+  hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
+  const int rank = cols == 0 ? 1 : 2;
+  H5Handle space = check(H5Screate_simple(rank, dims, nullptr), H5Sclose, path,
+                         fmt::format("cannot create dataspace for /{}", name));
+  H5Handle ds = check(H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                                 H5P_DEFAULT),
+                      H5Dclose, path, fmt::format("cannot create dataset /{}", name));
+  if (rows > 0) {
+    check(H5Dwrite(ds.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
+          fmt::format("cannot write dataset /{}", name));
+  }
+  check(ds.close(), path, fmt::format("cannot close dataset /{}", name));
+}
+
+void write_scalar_attribute(hid_t obj, const std::filesystem::path& path, const char* name,
+                            hid_t file_type, hid_t mem_type, const void* value) {
+  H5Handle space = check(H5Screate(H5S_SCALAR), H5Sclose, path, "cannot create dataspace");
+  H5Handle attr = check(H5Acreate2(obj, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                        H5Aclose, path, fmt::format("cannot create attribute {}", name));
+  check(H5Awrite(attr.get(), mem_type, value), path,
+        fmt::format("cannot write attribute {}", name));
+  check(attr.close(), path, fmt::format("cannot close attribute {}", name));
+}
+
+void check_size(std::string_view name, size_t got, size_t expected) {
+  if (got != expected) {
+    throw std::invalid_argument(fmt::format(
+        "SnapshotFields::{} has {} values, expected {}", name, got, expected));
+  }
+}
+
+std::string fmt_double(double v) { return fmt::format("{:.17g}", v); }
+
+}  // namespace
+
+std::string SnapshotWriter::snapshot_name(size_t index) { return fmt::format("{:06d}", index); }
+
+std::string SnapshotWriter::snapshot_relative_path(size_t index) {
+  return fmt::format("snapshots/snapshot_{:06d}.h5", index);
+}
+
+SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir_ / "snapshots", ec);
+  if (ec) {
+    throw std::runtime_error(fmt::format("cannot create output folder '{}': {}",
+                                         (out_dir_ / "snapshots").string(), ec.message()));
+  }
+  // A new series: drop snapshot files of an earlier run so the folder matches the master file.
+  for (const auto& e : std::filesystem::directory_iterator(out_dir_ / "snapshots", ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.starts_with("snapshot_") &&
+        (name.ends_with(".h5") || name.find(".h5.tmp.") != std::string::npos)) {
+      std::error_code rm_ec;
+      std::filesystem::remove(e.path(), rm_ec);
+    }
+  }
+  // HDF5 prints its error stack on failures; keep that (useful diagnostics) but make sure the
+  // library is initialised before use.
+  H5open();
+}
+
+void SnapshotWriter::write(double time, long step, const SnapshotFields& f) {
+  if (f.dim != 2 && f.dim != 3) {
+    throw std::invalid_argument(fmt::format("SnapshotFields::dim must be 2 or 3, got {}", f.dim));
+  }
+  const size_t n = f.pressure.size();
+  const size_t d = static_cast<size_t>(f.dim);
+  check_size("position", f.position.size(), n * d);
+  check_size("velocity", f.velocity.size(), n * d);
+  check_size("number_density", f.number_density.size(), n);
+  check_size("density", f.density.size(), n);
+  check_size("phase", f.phase.size(), n);
+  check_size("kind", f.kind.size(), n);
+  check_size("id", f.id.size(), n);
+
+  const size_t index = entries_.size();
+  write_snapshot_file(out_dir_ / snapshot_relative_path(index), time, step, f);
+  entries_.push_back(Entry{time, step, n});
+  try {
+    write_master();
+    write_xdmf();
+  } catch (...) {
+    entries_.pop_back();
+    throw;
+  }
+}
+
+void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path, double time,
+                                         long step, const SnapshotFields& f) const {
+  const size_t n = f.pressure.size();
+  const size_t d = static_cast<size_t>(f.dim);
+  const std::filesystem::path tmp = temporary_path_for(final_path);
+  TempGuard guard{tmp};
+  {
+    H5Handle file = create_file(tmp);
+    const hid_t fid = file.get();
+
+    std::vector<double> xyz(n * 3, 0.0);
+    auto pad = [&](std::span<const double> src) {
+      for (size_t i = 0; i < n; ++i)
+        for (size_t k = 0; k < d; ++k) xyz[i * 3 + k] = src[i * d + k];
+    };
+    pad(f.position);
+    write_dataset(fid, tmp, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, xyz.data(), n, 3);
+    pad(f.velocity);
+    write_dataset(fid, tmp, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, xyz.data(), n, 3);
+    write_dataset(fid, tmp, "pressure", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, f.pressure.data(), n);
+    write_dataset(fid, tmp, "number_density", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                  f.number_density.data(), n);
+    write_dataset(fid, tmp, "density", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, f.density.data(), n);
+    write_dataset(fid, tmp, "phase", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.phase.data(), n);
+    write_dataset(fid, tmp, "kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.kind.data(), n);
+    write_dataset(fid, tmp, "id", H5T_STD_U32LE, H5T_NATIVE_UINT32, f.id.data(), n);
+
+    const int64_t step64 = step;
+    const int32_t dim32 = f.dim;
+    write_scalar_attribute(fid, tmp, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time);
+    write_scalar_attribute(fid, tmp, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step64);
+    write_scalar_attribute(fid, tmp, "dim", H5T_STD_I32LE, H5T_NATIVE_INT32, &dim32);
+    check(file.close(), tmp, "cannot close file");
+  }
+  guard.active = false;  // commit_temporary_file removes tmp itself on failure
+  commit_temporary_file(tmp, final_path);
+}
+
+void SnapshotWriter::write_master() const {
+  const std::filesystem::path final_path = master_path();
+  const std::filesystem::path tmp = temporary_path_for(final_path);
+  TempGuard guard{tmp};
+  {
+    H5Handle file = create_file(tmp);
+    const hid_t fid = file.get();
+    H5Handle group = check(H5Gcreate2(fid, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                           H5Gclose, tmp, "cannot create group /snapshots");
+    std::vector<double> times;
+    std::vector<int64_t> steps;
+    times.reserve(entries_.size());
+    steps.reserve(entries_.size());
+    for (size_t i = 0; i < entries_.size(); ++i) {
+      const std::string target = snapshot_relative_path(i);
+      const std::string name = snapshot_name(i);
+      check(H5Lcreate_external(target.c_str(), "/", group.get(), name.c_str(), H5P_DEFAULT,
+                               H5P_DEFAULT),
+            tmp, fmt::format("cannot create external link /snapshots/{}", name));
+      times.push_back(entries_[i].time);
+      steps.push_back(entries_[i].step);
+    }
+    check(group.close(), tmp, "cannot close group /snapshots");
+    write_dataset(fid, tmp, "times", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, times.data(),
+                  times.size());
+    write_dataset(fid, tmp, "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, steps.data(),
+                  steps.size());
+    check(file.close(), tmp, "cannot close file");
+  }
+  guard.active = false;
+  commit_temporary_file(tmp, final_path);
+}
+
+void SnapshotWriter::write_xdmf() const {
+  std::string x;
+  x.reserve(1024 + entries_.size() * 2048);
+  x += "<?xml version=\"1.0\" ?>\n";
+  x += "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n";
+  x += "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n";
+  x += "  <Domain>\n";
+  x += "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  auto out = std::back_inserter(x);
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    const Entry& e = entries_[i];
+    const std::string file = snapshot_relative_path(i);
+    fmt::format_to(out, "      <Grid Name=\"snapshot_{}\" GridType=\"Uniform\">\n",
+                   snapshot_name(i));
+    fmt::format_to(out, "        <Time Value=\"{}\"/>\n", fmt_double(e.time));
+    fmt::format_to(out,
+                   "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" "
+                   "NodesPerElement=\"1\"/>\n",
+                   e.n);
+    fmt::format_to(out,
+                   "        <Geometry GeometryType=\"XYZ\">\n"
+                   "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
+                   "Format=\"HDF\">{}:/position</DataItem>\n"
+                   "        </Geometry>\n",
+                   e.n, file);
+    auto attribute = [&](const char* name, const char* type, const char* number_type,
+                         int precision, bool vector) {
+      const std::string dims = vector ? fmt::format("{} 3", e.n) : fmt::format("{}", e.n);
+      fmt::format_to(out,
+                     "        <Attribute Name=\"{0}\" AttributeType=\"{1}\" Center=\"Node\">\n"
+                     "          <DataItem Dimensions=\"{2}\" NumberType=\"{3}\" "
+                     "Precision=\"{4}\" Format=\"HDF\">{5}:/{0}</DataItem>\n"
+                     "        </Attribute>\n",
+                     name, type, dims, number_type, precision, file);
+    };
+    attribute("velocity", "Vector", "Float", 8, true);
+    attribute("pressure", "Scalar", "Float", 8, false);
+    attribute("number_density", "Scalar", "Float", 8, false);
+    attribute("density", "Scalar", "Float", 8, false);
+    attribute("phase", "Scalar", "UChar", 1, false);
+    attribute("kind", "Scalar", "UChar", 1, false);
+    attribute("id", "Scalar", "UInt", 4, false);
+    x += "      </Grid>\n";
+  }
+  x += "    </Grid>\n";
+  x += "  </Domain>\n";
+  x += "</Xdmf>\n";
+  write_file_atomically(xdmf_path(), x);
+}
+
+}  // namespace slide::tools

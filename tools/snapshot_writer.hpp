@@ -1,0 +1,74 @@
+#pragma once
+// Particle snapshots readable by ParaView (XDMF) and h5py, crash-safe, O(1) HDF5 data written per
+// snapshot.
+//
+// Layout under out_dir:
+//   snapshots/snapshot_000000.h5, snapshot_000001.h5, ...   one file per snapshot, each written
+//       under a temporary name, closed, fsync()ed and renamed. Datasets (n particles):
+//       /position, /velocity  float64 n x 3 (z = 0 in 2-D), /pressure, /number_density, /density
+//       float64 n, /phase, /kind uint8 n, /id uint32 n; root attributes time (float64),
+//       step (int64), dim (int32).
+//   particles.h5    master file (re-created atomically after every snapshot): group /snapshots
+//       with one external link per snapshot, named by the 6-digit index, pointing at
+//       "snapshots/snapshot_XXXXXX.h5" object "/"; datasets /times (float64) and /steps (int64).
+//       The link targets are relative paths, which HDF5 (1.10+) resolves relative to the folder
+//       of particles.h5, so h5py.File('.../particles.h5')['snapshots/000003/pressure'] works from
+//       any working directory.
+//   particles.xdmf  XDMF 3 temporal collection of Polyvertex grids (re-created atomically),
+//       referencing the snapshot files by relative path: open it in ParaView.
+//
+// Constructing a SnapshotWriter starts a new series: snapshot files left in out_dir/snapshots by
+// a previous run (snapshot_*.h5 and stale temporaries) are removed.
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace slide::tools {
+
+struct SnapshotFields {  // one snapshot; n particles (n = pressure.size())
+  int dim = 3;           // 2 or 3
+  std::span<const double> position, velocity;  // n*dim each, particle-major (x0 y0 [z0] x1 ...)
+  std::span<const double> pressure, number_density, density;  // n each
+  std::span<const uint8_t> phase, kind;  // n each; kind: 0 fluid, 1 wall, 2 dummy, 3 body
+  std::span<const uint32_t> id;          // n; particle id (stable across snapshots)
+};
+
+class SnapshotWriter {
+ public:
+  // Creates out_dir and out_dir/snapshots if needed.
+  explicit SnapshotWriter(std::filesystem::path out_dir);
+
+  // Appends one snapshot: writes its file, then re-creates particles.h5 and particles.xdmf.
+  // Throws std::invalid_argument on inconsistent span sizes or dim, std::runtime_error (naming
+  // the file) on I/O or HDF5 errors; on error the previously written series stays intact.
+  void write(double time, long step, const SnapshotFields& f);
+
+  size_t count() const { return entries_.size(); }
+
+  const std::filesystem::path& out_dir() const { return out_dir_; }
+  std::filesystem::path master_path() const { return out_dir_ / "particles.h5"; }
+  std::filesystem::path xdmf_path() const { return out_dir_ / "particles.xdmf"; }
+  // "snapshots/snapshot_XXXXXX.h5" (relative to out_dir).
+  static std::string snapshot_relative_path(size_t index);
+  // "XXXXXX": the link name in /snapshots of particles.h5.
+  static std::string snapshot_name(size_t index);
+
+ private:
+  struct Entry {
+    double time;
+    long step;
+    size_t n;
+  };
+  void write_snapshot_file(const std::filesystem::path& final_path, double time, long step,
+                           const SnapshotFields& f) const;
+  void write_master() const;
+  void write_xdmf() const;
+
+  std::filesystem::path out_dir_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace slide::tools
