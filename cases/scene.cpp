@@ -1,0 +1,402 @@
+#include "cases/scene.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <functional>
+#include <map>
+
+#include "fluid/hydrostatic_start.hpp"
+#include "fluid/walls.hpp"
+
+namespace slide::cases {
+namespace {
+
+using S = Schema;
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+Schema point_list(std::string doc, std::size_t min_points) {
+  return S::list(std::move(doc), S::vector("a point [x, y]", "m", 2, std::nullopt), min_points);
+}
+
+Schema make_schema() {
+  auto phase = S::map("one phase of fluid particles",
+                      {{"name", S::text("name that regions refer to", std::nullopt)},
+                       {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, inf, true)},
+                       {"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf)}});
+  auto region = S::variant(
+      "a region filled with fluid particles on the lattice x = (i + 1/2) dp, y = (j + 1/2) dp", "type",
+      {{"rectangle", S::map("the particles whose cell lies inside [min, max]",
+                            {{"phase", S::text("phase name (default: the first phase)", "")},
+                             {"min", S::vector("lower-left corner", "m", 2, std::nullopt)},
+                             {"max", S::vector("upper-right corner", "m", 2, std::nullopt)}})},
+       {"polygon", S::map("the particles whose centre lies inside a closed polygon",
+                          {{"phase", S::text("phase name (default: the first phase)", "")},
+                           {"points", point_list("polygon vertices (closed automatically)", 3)}})},
+       {"below_level", S::map("water below a level inside the walls: every lattice point below the level, "
+                              "inside the walls' bounding box, on the fluid side of the nearest wall face and at "
+                              "least dp/2 from it",
+                              {{"phase", S::text("phase name (default: the first phase)", "")},
+                               {"level", S::number("still-water level", "m", std::nullopt)}})}});
+  auto wall = S::map(
+      "a wall given by its face (the surface the fluid touches); wall and dummy particle layers are placed "
+      "behind it at (k + 1/2) dp",
+      {{"name", S::text("name used in messages", "")},
+       {"points", point_list("vertices of the face polyline", 2)},
+       {"fluid_side", S::choice("side of the polyline (walking from the first vertex) where the fluid is",
+                                {"left", "right"}, "left")},
+       {"layers", S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel",
+                             0L, 0L, 10L)}});
+  auto method = S::map(
+      "numerical method (weakly compressible MPS, seed eqs. 1-7)",
+      {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
+       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", {"standard", "pmin", "symmetric"},
+                              "symmetric")},
+       {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
+       {"sound_speed", S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0,
+                                 0.0, inf)},
+       {"free_surface_beta", S::number("free-surface threshold: n < beta n0 gets zero pressure", "", 0.97, 0.0,
+                                       1.0, true, false)},
+       {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
+       {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
+                               "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
+                               {"no_slip", "free_slip"}, "no_slip")},
+       {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; lattice "
+                                   "starts from the uncompressed lattice",
+                                   {"hydrostatic", "lattice"}, "hydrostatic")},
+       {"neighbor_skin", S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it",
+                                   "dp", 0.3, 0.0, 1.0)}},
+      false);
+  auto time_step = S::map(
+      "adaptive time step: dt = min(cfl dp / (c0 + |u|max), viscous_number dp^2 / nu_max, "
+      "force_number sqrt(dp / |a|max), max)",
+      {{"cfl", S::number("acoustic Courant number", "", 0.2, 0.0, 1.0, true, false)},
+       {"viscous_number", S::number("viscous diffusion number", "", 0.1, 0.0, 0.5, true, false)},
+       {"force_number", S::number("force (acceleration) number", "", 0.25, 0.0, 1.0, true, false)},
+       {"max", S::number("largest time step", "s", 1.0e-3, 0.0, inf, true, false)}},
+      false);
+  auto checks = S::map(
+      "stability checks after every step; a failed check stops the run with exit 3",
+      {{"max_number_density_ratio", S::number("n / n0 above this is a number-density collapse", "", 1.5, 1.0,
+                                              inf, true, false)},
+       {"max_speed_over_c0", S::number("a fluid speed above this many c0 is a blow-up", "", 1.0, 0.0, inf, true,
+                                       false)}},
+      false);
+  auto output = S::map(
+      "what is written to the output folder",
+      {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
+       {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, inf)},
+       {"gauge_interval", S::number("time between gauge and diagnostic samples", "s", 0.005, 0.0, inf, true,
+                                    false)}},
+      false);
+  auto gauge = S::map("a wave gauge: free-surface elevation by a vertical scan of the fluid number density",
+                      {{"name", S::text("column name in gauges.csv", std::nullopt)},
+                       {"x", S::number("gauge position", "m", std::nullopt)}});
+  auto surge = S::map(
+      "dam-break diagnostics (surge_front.csv): front of the largest connected body of water (particles closer "
+      "than 2 dp linked) measured from the wall face, and the water height at that wall",
+      {{"enabled", S::boolean("write surge_front.csv", false)},
+       {"wall_face_x", S::number("x of the wall face the column stands against", "m", 0.0)},
+       {"floor_y", S::number("y of the floor face", "m", 0.0)},
+       {"column_width", S::number("initial column width a for Z = front / a and T = t sqrt(2 g / a); 0 = omit",
+                                  "m", 0.0, 0.0, inf)}},
+      false);
+  auto domain = S::map("box outside which a fluid particle is an instability; default: the particles' bounding "
+                       "box enlarged by 4 re on every side and by half its height upwards",
+                       {{"min", S::vector("lower corner", "m", 2, std::nullopt)},
+                        {"max", S::vector("upper corner", "m", 2, std::nullopt)}},
+                       false);
+  return S::map(
+      "a slide scene",
+      {{"name", S::text("case name; default: the file name without extension", "")},
+       {"description", S::text("free text", "")},
+       {"dimension", S::integer("spatial dimension (scenes are 2-D for now; the solver is built for 2 and 3)", 2L,
+                                2L, 2L)},
+       {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, inf, true, false)},
+       {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
+       {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
+       {"domain", domain},
+       {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase, 1)},
+                                      {"regions", S::list("regions filled with fluid", region, 1)}})},
+       {"walls", S::list("walls", wall)},
+       {"method", method},
+       {"time_step", time_step},
+       {"checks", checks},
+       {"output", output},
+       {"gauges", S::list("wave gauges", gauge)},
+       {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge}}, false)}});
+}
+
+Vec<2> vec2(const YAML::Node& n) { return Vec<2>(n[0].as<double>(), n[1].as<double>()); }
+
+std::vector<Vec<2>> points_of(const YAML::Node& n) {
+  std::vector<Vec<2>> out;
+  for (const auto& p : n) out.push_back(vec2(p));
+  return out;
+}
+
+bool inside_polygon(const std::vector<Vec<2>>& poly, const Vec<2>& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const auto &a = poly[i], &b = poly[j];
+    if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+  }
+  return in;
+}
+
+struct FaceSegment {
+  Vec<2> a, b, inward;
+};
+
+// Signed distance of p from the nearest face segment: positive on the fluid side.
+double signed_face_distance(const std::vector<FaceSegment>& faces, const Vec<2>& p) {
+  double best = inf, signed_best = -inf;
+  for (const auto& f : faces) {
+    const Vec<2> ab = f.b - f.a;
+    const double t = std::clamp((p - f.a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const Vec<2> q = f.a + t * ab;
+    const double d = (p - q).norm();
+    if (d < best - 1e-12) {
+      best = d;
+      signed_best = (p - q).dot(f.inward) >= 0.0 ? d : -d;
+    }
+  }
+  return signed_best;
+}
+
+}  // namespace
+
+const Schema& scene_schema() {
+  static const Schema schema = make_schema();
+  return schema;
+}
+
+YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  YAML::Node raw;
+  try {
+    raw = YAML::LoadFile(file.string());
+  } catch (const YAML::BadFile&) {
+    throw SceneError("<file>", "cannot read scene file " + file.string());
+  } catch (const YAML::Exception& e) {
+    throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
+  }
+  if (!raw.IsMap()) throw SceneError("<root>", "a scene file must be a YAML mapping");
+  for (const auto& o : overrides) apply_override(raw, o);
+  return scene_schema().resolve(raw);
+}
+
+std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name) {
+  auto scene = std::make_unique<Scene>();
+  scene->resolved = r;
+  scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
+  scene->end_time = r["end_time"].as<double>();
+  auto sim = std::make_unique<Simulation<2>>();
+  auto& opt = sim->options;
+  auto& P = sim->particles;
+  const double dp = r["particle_spacing"].as<double>();
+  const YAML::Node m = r["method"];
+  opt.dp = dp;
+  opt.re_over_dp = m["kernel_radius"].as<double>();
+  opt.skin_over_dp = m["neighbor_skin"].as<double>();
+  const std::string grad = m["gradient"].as<std::string>();
+  opt.gradient = grad == "standard" ? GradientModel::standard
+                 : grad == "pmin"   ? GradientModel::pmin
+                                    : GradientModel::symmetric;
+  opt.gamma = m["gamma"].as<double>();
+  opt.free_surface_beta = m["free_surface_beta"].as<double>();
+  opt.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
+  opt.wall_slip = m["wall_slip"].as<std::string>() == "no_slip" ? WallSlip::no_slip : WallSlip::free_slip;
+  opt.gravity = vec2(r["gravity"]);
+  opt.cfl = r["time_step"]["cfl"].as<double>();
+  opt.viscous_number = r["time_step"]["viscous_number"].as<double>();
+  opt.force_number = r["time_step"]["force_number"].as<double>();
+  opt.dt_max = r["time_step"]["max"].as<double>();
+  opt.max_number_density_ratio = r["checks"]["max_number_density_ratio"].as<double>();
+  opt.max_speed_over_c0 = r["checks"]["max_speed_over_c0"].as<double>();
+  const double re = opt.re_over_dp * dp;
+
+  // Phases.
+  std::map<std::string, std::size_t> phase_index;
+  std::vector<std::pair<double, double>> phase_props;  // density, viscosity
+  for (std::size_t k = 0; k < r["fluid"]["phases"].size(); ++k) {
+    const auto ph = r["fluid"]["phases"][k];
+    const std::string name = ph["name"].as<std::string>();
+    if (phase_index.count(name))
+      throw SceneError(fmt::format("fluid.phases[{}].name", k), "duplicate phase name \"" + name + "\"");
+    phase_index[name] = k;
+    phase_props.emplace_back(ph["density"].as<double>(), ph["viscosity"].as<double>());
+  }
+
+  // Walls first (regions of type below_level need their faces).
+  std::vector<FaceSegment> faces;
+  std::vector<std::size_t> wall_of_particle;
+  for (std::size_t w = 0; w < r["walls"].size(); ++w) {
+    const auto wn = r["walls"][w];
+    const auto face = points_of(wn["points"]);
+    const bool left = wn["fluid_side"].as<std::string>() == "left";
+    const long layers_key = wn["layers"].as<long>();
+    const int layers = layers_key == 0 ? boundary_layers(opt.re_over_dp) : static_cast<int>(layers_key);
+    std::vector<BoundaryPoint> pts;
+    try {
+      pts = polyline_boundary(face, left, dp, layers);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(fmt::format("walls[{}].points", w), e.what());
+    }
+    for (std::size_t s = 0; s + 1 < face.size(); ++s) {
+      const Vec<2> d = (face[s + 1] - face[s]).normalized();
+      const Vec<2> l(-d[1], d[0]);
+      faces.push_back({face[s], face[s + 1], left ? l : Vec<2>(-l)});
+    }
+    // Boundary particles of the first phase's density; they carry no viscosity of their own.
+    for (const auto& b : pts) {
+      bool duplicate = false;  // overlapping layers at convex corners or where walls meet
+      for (std::size_t i = 0; i < P.size() && !duplicate; ++i)
+        duplicate = distance_squared<2>(P.position[i], b.position) < 0.25 * dp * dp;
+      if (duplicate) continue;
+      const std::size_t i = P.add(b.position, b.layer == 0 ? Kind::wall : Kind::dummy, 0, phase_props[0].first,
+                                  phase_props[0].second);
+      P.wall_normal[i] = b.normal;
+      P.wall_depth[i] = b.depth;
+      wall_of_particle.push_back(w);
+    }
+  }
+  const std::size_t boundary_count = P.size();
+
+  // Bounding box of the wall faces, for below_level regions.
+  Vec<2> face_lo = Vec<2>::Constant(inf), face_hi = Vec<2>::Constant(-inf);
+  for (const auto& f : faces) {
+    face_lo = face_lo.cwiseMin(f.a).cwiseMin(f.b);
+    face_hi = face_hi.cwiseMax(f.a).cwiseMax(f.b);
+  }
+
+  // Fluid regions.
+  std::vector<std::size_t> region_of_particle;
+  for (std::size_t k = 0; k < r["fluid"]["regions"].size(); ++k) {
+    const auto rn = r["fluid"]["regions"][k];
+    const std::string path = fmt::format("fluid.regions[{}]", k);
+    std::string phase_name = rn["phase"].as<std::string>();
+    if (phase_name.empty()) phase_name = r["fluid"]["phases"][0]["name"].as<std::string>();
+    if (!phase_index.count(phase_name))
+      throw SceneError(path + ".phase", "no phase named \"" + phase_name + "\" in fluid.phases");
+    const std::size_t ph = phase_index[phase_name];
+    const std::string type = rn["type"].as<std::string>();
+    Vec<2> lo, hi;
+    std::function<bool(const Vec<2>&)> inside;
+    std::vector<Vec<2>> poly;
+    if (type == "rectangle") {
+      lo = vec2(rn["min"]);
+      hi = vec2(rn["max"]);
+      if (!(lo[0] < hi[0] && lo[1] < hi[1])) throw SceneError(path + ".max", "must exceed min in x and y");
+      inside = [&](const Vec<2>& p) {
+        const double e = 1e-9 * dp;
+        return p[0] - 0.5 * dp >= lo[0] - e && p[0] + 0.5 * dp <= hi[0] + e && p[1] - 0.5 * dp >= lo[1] - e &&
+               p[1] + 0.5 * dp <= hi[1] + e;
+      };
+    } else if (type == "polygon") {
+      poly = points_of(rn["points"]);
+      lo = hi = poly[0];
+      for (const auto& q : poly) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+      inside = [&](const Vec<2>& p) { return inside_polygon(poly, p); };
+    } else {
+      if (faces.empty()) throw SceneError(path, "a below_level region needs walls around it");
+      const double level = rn["level"].as<double>();
+      lo = face_lo;
+      hi = Vec<2>(face_hi[0], std::min(level, face_hi[1]));
+      inside = [&, level](const Vec<2>& p) {
+        return p[1] < level && signed_face_distance(faces, p) >= 0.5 * dp - 1e-9 * dp;
+      };
+    }
+    std::size_t added = 0;
+    const long i0 = static_cast<long>(std::floor(lo[0] / dp)) - 1, i1 = static_cast<long>(std::ceil(hi[0] / dp)) + 1;
+    const long j0 = static_cast<long>(std::floor(lo[1] / dp)) - 1, j1 = static_cast<long>(std::ceil(hi[1] / dp)) + 1;
+    for (long j = j0; j <= j1; ++j)
+      for (long i = i0; i <= i1; ++i) {
+        const Vec<2> p((i + 0.5) * dp, (j + 0.5) * dp);
+        if (!inside(p)) continue;
+        P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase_props[ph].first, phase_props[ph].second);
+        region_of_particle.push_back(k);
+        ++added;
+      }
+    if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", dp));
+  }
+
+  // Overlaps: fluid particles too close to a boundary particle or to each other.
+  Vec<2> lo = P.position[0], hi = P.position[0];
+  for (const auto& x : P.position) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  {
+    NeighborGrid<2> g(lo - Vec<2>::Constant(dp), hi + Vec<2>::Constant(dp), dp);
+    g.bin(P.position);
+    for (std::size_t i = boundary_count; i < P.size(); ++i) {
+      const std::string path = fmt::format("fluid.regions[{}]", region_of_particle[i - boundary_count]);
+      g.for_each_near(P.position[i], 0.75 * dp, P.position, [&](std::uint32_t j, double r2) {
+        if (j == i) return;
+        if (j < boundary_count)
+          throw SceneError(path, fmt::format("water overlaps wall walls[{}]: a particle at ({:.6g}, {:.6g}) is {:.3g} dp "
+                                             "from a wall particle (at least 0.75 dp needed)",
+                                             wall_of_particle[j], P.position[i][0], P.position[i][1],
+                                             std::sqrt(r2) / dp));
+        if (j < i)
+          throw SceneError(path, fmt::format("overlaps fluid.regions[{}] at ({:.6g}, {:.6g})",
+                                             region_of_particle[j - boundary_count], P.position[i][0],
+                                             P.position[i][1]));
+      });
+    }
+  }
+
+  // Sound speed and hydrostatic start.
+  const double g = -opt.gravity[1];
+  scene->deepest_water = compress_hydrostatically<2>(P, dp, re, EquationOfState(1.0, 1.0, opt.gamma), g, false);
+  const double c0_key = m["sound_speed"].as<double>();
+  if (c0_key > 0.0) {
+    opt.sound_speed = c0_key;
+    scene->sound_speed_source = "method.sound_speed";
+  } else {
+    if (g <= 0.0 || scene->deepest_water <= 0.0)
+      throw SceneError("method.sound_speed", "cannot default to 10 sqrt(g H) without downward gravity; set it");
+    opt.sound_speed = 10.0 * std::sqrt(g * scene->deepest_water);
+    scene->sound_speed_source =
+        fmt::format("default 10 sqrt(g H), H = {:.6g} m (deepest water), g = {:.6g} m/s^2", scene->deepest_water, g);
+  }
+  if (m["initial_state"].as<std::string>() == "hydrostatic" && g > 0.0) {
+    const LatticeConstants lc = lattice_constants<2>(dp, re);
+    compress_hydrostatically<2>(P, dp, re, EquationOfState(lc.n0, opt.sound_speed, opt.gamma), g, true);
+  }
+
+  // Domain.
+  if (r["domain"]) {
+    opt.domain_lo = vec2(r["domain"]["min"]);
+    opt.domain_hi = vec2(r["domain"]["max"]);
+    for (std::size_t i = 0; i < P.size(); ++i)
+      for (int k = 0; k < 2; ++k)
+        if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
+          throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
+                                                 P.position[i][0], P.position[i][1]));
+  } else {
+    opt.domain_lo = lo - Vec<2>::Constant(4 * re);
+    opt.domain_hi = hi + Vec<2>::Constant(4 * re) + Vec<2>(0.0, 0.5 * (hi[1] - lo[1]));
+  }
+
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] == Kind::fluid) ++scene->fluid_count;
+    else if (P.kind[i] == Kind::wall) ++scene->wall_count;
+    else ++scene->dummy_count;
+  }
+
+  // Gauges and diagnostics.
+  for (std::size_t k = 0; k < r["gauges"].size(); ++k)
+    scene->gauges.push_back({r["gauges"][k]["name"].as<std::string>(), r["gauges"][k]["x"].as<double>()});
+  const auto sf = r["diagnostics"]["surge_front"];
+  scene->surge_front = {sf["enabled"].as<bool>(), sf["wall_face_x"].as<double>(), sf["floor_y"].as<double>(),
+                        sf["column_width"].as<double>()};
+  scene->output.snapshots = r["output"]["snapshots"].as<bool>();
+  scene->output.snapshot_interval = r["output"]["snapshot_interval"].as<double>();
+  scene->output.gauge_interval = r["output"]["gauge_interval"].as<double>();
+
+  sim->initialise();
+  scene->simulation = std::move(sim);
+  return scene;
+}
+
+}  // namespace slide::cases

@@ -1,0 +1,57 @@
+#pragma once
+// A scene: the YAML file's schema, and the simulation it builds.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "cases/schema.hpp"
+#include "coupling/simulation.hpp"
+
+namespace slide::cases {
+
+struct GaugeSpec {
+  std::string name;
+  double x = 0.0;
+};
+
+// Dam-break diagnostics: surge front and water height at the wall (see coupling/surge_front.hpp).
+struct SurgeFrontSpec {
+  bool enabled = false;
+  double wall_face_x = 0.0;
+  double floor_y = 0.0;
+  double column_width = 0.0;  // a, for the dimensionless columns
+};
+
+struct OutputSpec {
+  bool snapshots = true;
+  double snapshot_interval = 0.0;  // s; 0 = first and last only
+  double gauge_interval = 0.0;     // s
+};
+
+struct Scene {
+  std::string name;
+  YAML::Node resolved;  // every key, defaults filled in
+  double end_time = 0.0;
+  std::unique_ptr<Simulation<2>> simulation;
+  std::vector<GaugeSpec> gauges;
+  SurgeFrontSpec surge_front;
+  OutputSpec output;
+  double deepest_water = 0.0;      // m, nominal
+  std::string sound_speed_source;  // how c0 was chosen
+  std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
+};
+
+// The scene format. Its document() is cases/SCHEMA.md.
+const Schema& scene_schema();
+
+// Reads a scene file, applies --set overrides and checks it. Throws SceneError (exit 2) on any problem.
+YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+
+// Builds particles and options from a resolved scene. Throws SceneError for geometric problems (a region that
+// holds no particle, water overlapping a wall).
+std::unique_ptr<Scene> build_scene(const YAML::Node& resolved, const std::string& default_name);
+
+}  // namespace slide::cases

@@ -1,0 +1,190 @@
+#include "coupling/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fluid/number_density.hpp"
+#include "fluid/parallel.hpp"
+#include "fluid/wall_pressure.hpp"
+
+namespace slide {
+
+template <int D>
+void Simulation<D>::initialise() {
+  const double dp = options.dp;
+  lattice = lattice_constants<D>(dp, re());
+  eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
+  grid_ = NeighborGrid<D>(options.domain_lo, options.domain_hi, re() + options.skin_over_dp * dp);
+  scratch_.assign(particles.size(), Vec<D>::Zero());
+  update_neighbors(true);
+  compute_pressure();
+}
+
+template <int D>
+void Simulation<D>::update_neighbors(bool force) {
+  auto& x = particles.position;
+  const double half_skin = 0.5 * options.skin_over_dp * options.dp;
+  if (!force) {
+    const double moved2 = parallel_max(x.size(), 0.0, [&](std::size_t i) {
+      return distance_squared<D>(x[i], position_at_build_[i]);
+    });
+    if (moved2 < half_skin * half_skin) return;
+  }
+  // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again.
+  grid_.bin(x);
+  particles.reorder(grid_.sorted_indices());
+  grid_.bin(x);
+  build_neighbor_list(grid_, x, re() + options.skin_over_dp * options.dp, list_);
+  position_at_build_ = x;
+  ++rebuilds_;
+}
+
+template <int D>
+void Simulation<D>::compute_pressure() {
+  auto& P = particles;
+  const double r_e = re();
+  compute_number_density<D>(P.position, list_, r_e, P.number_density);
+  const double surface_n = options.free_surface_beta * lattice.n0;
+  parallel_for(P.size(), [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    const double n = P.number_density[i];
+    double p = n < surface_n ? 0.0 : eos.pressure(n, P.density[i]);
+    if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
+    P.pressure[i] = p;
+  });
+  parallel_for(P.size(), [&](std::size_t i) {
+    if (P.kind[i] == Kind::fluid) return;
+    double p = extrapolated_wall_pressure<D>(i, P, list_, r_e, options.gravity);
+    if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
+    P.pressure[i] = p;
+  });
+}
+
+template <int D>
+double Simulation<D>::max_fluid_speed() const {
+  const auto& P = particles;
+  return std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) {
+    return P.kind[i] == Kind::fluid ? P.velocity[i].squaredNorm() : 0.0;
+  }));
+}
+
+template <int D>
+std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
+  const auto& P = particles;
+  const double dp = options.dp;
+  const double u_max = max_fluid_speed();
+  const double a_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) {
+    return P.kind[i] == Kind::fluid ? P.acceleration[i].squaredNorm() : 0.0;
+  }));
+  const double nu_max = parallel_max(P.size(), 0.0, [&](std::size_t i) {
+    return P.kind[i] == Kind::fluid ? P.viscosity[i] / P.density[i] : 0.0;
+  });
+  std::pair<double, TimeStepLimit> best{options.dt_max, TimeStepLimit::dt_max};
+  auto consider = [&](double dt, TimeStepLimit l) {
+    if (dt < best.first) best = {dt, l};
+  };
+  consider(options.cfl * dp / (options.sound_speed + u_max), TimeStepLimit::cfl);
+  if (nu_max > 0.0) consider(options.viscous_number * dp * dp / nu_max, TimeStepLimit::viscous);
+  if (a_max > 0.0) consider(options.force_number * std::sqrt(dp / a_max), TimeStepLimit::force);
+  return best;
+}
+
+template <int D>
+std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
+  auto& P = particles;
+  const std::size_t n = P.size();
+  const double r_e = re();
+  update_neighbors(false);
+
+  // Explicit part: viscosity and gravity give the predicted velocity and position (fluid only).
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    P.acceleration[i] =
+        viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip) + options.gravity;
+  });
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    P.velocity[i] += dt * P.acceleration[i];
+    P.position[i] += dt * P.velocity[i];
+  });
+
+  // Number density and pressure at the predicted positions.
+  compute_pressure();
+
+  // Pressure-gradient correction.
+  const GradientModel model = options.gradient;
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P.position, P.pressure, list_, r_e,
+                                                               lattice.n0);
+  });
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    P.velocity[i] += dt * scratch_[i];
+    P.position[i] += (dt * dt) * scratch_[i];
+    P.acceleration[i] += scratch_[i];
+  });
+
+  time += dt;
+  ++step_count;
+  ++limit_counts[static_cast<int>(limit)];
+  return check();
+}
+
+template <int D>
+std::optional<Instability> Simulation<D>::check() const {
+  const auto& P = particles;
+  const double n_max = options.max_number_density_ratio * lattice.n0;
+  const double u_max = options.max_speed_over_c0 * options.sound_speed;
+  // Problem code per particle, most severe highest: 4 non-finite, 3 out of domain, 2 collapse, 1 speed.
+  auto code = [&](std::size_t i) -> int {
+    const auto& x = P.position[i];
+    if (!x.allFinite() || !P.velocity[i].allFinite() || !std::isfinite(P.pressure[i]) ||
+        !std::isfinite(P.number_density[i]))
+      return 4;
+    if (P.kind[i] != Kind::fluid) return 0;
+    for (int k = 0; k < D; ++k)
+      if (x[k] < options.domain_lo[k] || x[k] > options.domain_hi[k]) return 3;
+    if (P.number_density[i] > n_max) return 2;
+    if (P.velocity[i].squaredNorm() > u_max * u_max) return 1;
+    return 0;
+  };
+  const int worst = static_cast<int>(parallel_max(P.size(), 0.0, [&](std::size_t i) { return double(code(i)); }));
+  if (worst == 0) return std::nullopt;
+  // The reported particle: the lowest id with the most severe problem (independent of the thread count).
+  std::size_t pick = P.size();
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (code(i) == worst && (pick == P.size() || P.id[i] < P.id[pick])) pick = i;
+  Instability s;
+  s.time = time;
+  s.step = step_count;
+  s.particle = P.id[pick];
+  s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
+  const double ratio = P.number_density[pick] / lattice.n0;
+  switch (worst) {
+    case 4: s.reason = "non-finite position, velocity, pressure or number density"; break;
+    case 3: s.reason = "particle left the domain (through a wall or over the domain's bounds)"; break;
+    case 2:
+      s.reason = "number-density collapse: n/n0 = " + std::to_string(ratio) + " exceeds checks.max_number_density_ratio";
+      break;
+    default:
+      s.reason = "speed " + std::to_string(P.velocity[pick].norm()) + " m/s exceeds checks.max_speed_over_c0 * c0";
+  }
+  return s;
+}
+
+template <int D>
+double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
+  const auto& P = particles;
+  const double r_e = re();
+  double n = 0.0;
+  grid_.for_each_near(point, grid_.cell_size(), P.position, [&](std::uint32_t j, double r2) {
+    if (P.kind[j] == Kind::fluid) n += kernel_weight(std::sqrt(r2), r_e);
+  });
+  return n;
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace slide

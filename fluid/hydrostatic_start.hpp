@@ -1,0 +1,104 @@
+#pragma once
+// A tank at rest should start at rest. In WC-MPS the pressure follows from the number density (seed eq. 7), so a
+// hydrostatic pressure field needs particles packed slightly closer with depth. Starting from an uncompressed
+// lattice instead, the water falls under its own weight and rings for a long time.
+//
+// Each vertical run of fluid particles (same lattice column, consecutive spacing dp) is compressed along gravity:
+// the gap between two neighbours at depth z is shrunk to the vertical spacing at which the lattice's number density
+// gives the hydrostatic pressure rho g z through the equation of state. The run's bottom gap (to the wall or floor
+// below it) is compressed the same way, its top is the free surface at half a spacing above the top particle.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "fluid/equation_of_state.hpp"
+#include "fluid/kernel.hpp"
+#include "fluid/particles.hpp"
+
+namespace slide {
+
+// Number density (relative to n0) of the regular lattice with vertical spacing stretch * dp (last axis).
+template <int D>
+double stretched_lattice_density_ratio(double dp, double re, double stretch) {
+  const int m = static_cast<int>(std::ceil(re / (dp * std::min(1.0, stretch)))) + 1;
+  auto sum = [&](double s) {
+    double n = 0.0;
+    const int kmin = D == 3 ? -m : 0, kmax = D == 3 ? m : 0;
+    for (int i = -m; i <= m; ++i)
+      for (int j = -m; j <= m; ++j)
+        for (int k = kmin; k <= kmax; ++k) {
+          if (i == 0 && j == 0 && k == 0) continue;
+          // The last axis is vertical: j in 2-D, k in 3-D.
+          const double v = D == 2 ? j * s : k * s;
+          const double h2 = D == 2 ? double(i) * i : double(i) * i + double(j) * j;
+          n += kernel_weight(dp * std::sqrt(h2 + v * v), re);
+        }
+    return n;
+  };
+  return sum(stretch) / sum(1.0);
+}
+
+// Vertical stretch (< 1 is compression) at which the lattice number density ratio equals target (bisection).
+template <int D>
+double stretch_for_density_ratio(double dp, double re, double target) {
+  double lo = 0.8, hi = 1.0;
+  if (target <= 1.0) return 1.0;
+  for (int it = 0; it < 40; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (stretched_lattice_density_ratio<D>(dp, re, mid) > target)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Compresses the fluid particles' vertical positions as described above. g is the magnitude of gravity, which
+// points along -(last axis). Returns the deepest water (m) of any run, nominal (uncompressed) height.
+template <int D>
+double compress_hydrostatically(Particles<D>& P, double dp, double re, const EquationOfState& eos, double g,
+                                bool apply) {
+  constexpr int up = D - 1;
+  // Group fluid particles by lattice column.
+  std::map<std::array<long, 2>, std::vector<std::size_t>> columns;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid) continue;
+    std::array<long, 2> key{std::lround(P.position[i][0] / dp * 4.0), D == 3 ? std::lround(P.position[i][1] / dp * 4.0) : 0L};
+    columns[key].push_back(i);
+  }
+  double deepest = 0.0;
+  for (auto& [key, members] : columns) {
+    std::sort(members.begin(), members.end(),
+              [&](std::size_t a, std::size_t b) { return P.position[a][up] < P.position[b][up]; });
+    std::size_t start = 0;
+    while (start < members.size()) {
+      std::size_t end = start + 1;  // one past the run's top
+      while (end < members.size() &&
+             P.position[members[end]][up] - P.position[members[end - 1]][up] < 1.5 * dp)
+        ++end;
+      const double surface = P.position[members[end - 1]][up] + 0.5 * dp;
+      const double bottom = P.position[members[start]][up] - 0.5 * dp;
+      deepest = std::max(deepest, surface - bottom);
+      if (apply) {
+        // Walk up from the support one spacing below the bottom particle, shrinking each gap.
+        double below_nominal = P.position[members[start]][up] - dp;
+        double below_new = below_nominal;
+        for (std::size_t m = start; m < end; ++m) {
+          const double y = P.position[members[m]][up];
+          const double depth_mid = surface - 0.5 * (y + below_nominal);
+          const double rho = P.density[members[m]];
+          const double target = eos.number_density_ratio(rho * g * depth_mid, rho);
+          const double gap = (y - below_nominal) * stretch_for_density_ratio<D>(dp, re, target);
+          below_nominal = y;
+          below_new += gap;
+          P.position[members[m]][up] = below_new;
+        }
+      }
+      start = end;
+    }
+  }
+  return deepest;
+}
+
+}  // namespace slide

@@ -1,0 +1,138 @@
+#pragma once
+// Cell-list neighbour search. Cells are at least as large as the search radius, so the neighbours of a point lie
+// in its own cell and the 3^D cells around it. Points are binned with a stable counting sort, which also gives
+// the cell order used to re-sort particles for cache locality.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "fluid/parallel.hpp"
+#include "fluid/vec.hpp"
+
+namespace slide {
+
+template <int D>
+class NeighborGrid {
+ public:
+  NeighborGrid() = default;
+  NeighborGrid(const Vec<D>& lo, const Vec<D>& hi, double cell_size) : lo_(lo), cell_size_(cell_size) {
+    total_cells_ = 1;
+    for (int k = 0; k < D; ++k) {
+      cells_[k] = std::max(1, static_cast<int>(std::ceil((hi[k] - lo[k]) / cell_size)));
+      total_cells_ *= cells_[k];
+    }
+  }
+
+  double cell_size() const { return cell_size_; }
+
+  // Cell coordinates of x; points outside the box are put in the nearest edge cell (the caller checks the domain).
+  std::array<int, D> cell_of(const Vec<D>& x) const {
+    std::array<int, D> c;
+    for (int k = 0; k < D; ++k) {
+      const int ck = static_cast<int>(std::floor((x[k] - lo_[k]) / cell_size_));
+      c[k] = std::clamp(ck, 0, cells_[k] - 1);
+    }
+    return c;
+  }
+  std::size_t linear(const std::array<int, D>& c) const {
+    std::size_t l = 0;
+    for (int k = D - 1; k >= 0; --k) l = l * cells_[k] + c[k];
+    return l;
+  }
+
+  // Bins the points by cell (stable: equal cells keep index order).
+  void bin(const std::vector<Vec<D>>& x) {
+    const std::size_t n = x.size();
+    point_cell_.resize(n);
+    parallel_for(n, [&](std::size_t i) { point_cell_[i] = static_cast<std::uint32_t>(linear(cell_of(x[i]))); });
+    cell_start_.assign(total_cells_ + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) ++cell_start_[point_cell_[i] + 1];
+    for (std::size_t c = 0; c < total_cells_; ++c) cell_start_[c + 1] += cell_start_[c];
+    sorted_.resize(n);
+    std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) sorted_[fill[point_cell_[i]]++] = static_cast<std::uint32_t>(i);
+  }
+
+  // Point indices ordered by cell: the permutation that re-sorts particles for locality.
+  const std::vector<std::uint32_t>& sorted_indices() const { return sorted_; }
+
+  // Calls f(j, r2) for every binned point j with |x_j - q|^2 < radius^2, in a fixed order (cells in lexicographic
+  // order, points within a cell in index order). radius must not exceed the cell size.
+  template <class F>
+  void for_each_near(const Vec<D>& q, double radius, const std::vector<Vec<D>>& x, F&& f) const {
+    const double r2max = radius * radius;
+    const auto c = cell_of(q);
+    std::array<int, D> lo, hi;
+    for (int k = 0; k < D; ++k) {
+      lo[k] = std::max(c[k] - 1, 0);
+      hi[k] = std::min(c[k] + 1, cells_[k] - 1);
+    }
+    std::array<int, D> cc;
+    if constexpr (D == 2) {
+      for (cc[1] = lo[1]; cc[1] <= hi[1]; ++cc[1])
+        for (cc[0] = lo[0]; cc[0] <= hi[0]; ++cc[0]) visit_cell(linear(cc), q, r2max, x, f);
+    } else {
+      for (cc[2] = lo[2]; cc[2] <= hi[2]; ++cc[2])
+        for (cc[1] = lo[1]; cc[1] <= hi[1]; ++cc[1])
+          for (cc[0] = lo[0]; cc[0] <= hi[0]; ++cc[0]) visit_cell(linear(cc), q, r2max, x, f);
+    }
+  }
+
+ private:
+  template <class F>
+  void visit_cell(std::size_t cell, const Vec<D>& q, double r2max, const std::vector<Vec<D>>& x, F& f) const {
+    for (std::uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+      const std::uint32_t j = sorted_[s];
+      const double r2 = distance_squared<D>(x[j], q);
+      if (r2 < r2max) f(j, r2);
+    }
+  }
+
+  Vec<D> lo_ = Vec<D>::Zero();
+  double cell_size_ = 1.0;
+  std::array<int, D> cells_{};
+  std::size_t total_cells_ = 0;
+  std::vector<std::uint32_t> point_cell_, cell_start_, sorted_;
+};
+
+// Neighbour list with a fixed number of slots per particle: particle i's neighbours are
+// index[i * capacity .. i * capacity + count[i]). Kept for several steps: it is built with radius re + skin and is
+// valid while no particle has moved more than half the skin since the build.
+struct NeighborList {
+  std::size_t capacity = 0;
+  std::vector<std::uint32_t> count;
+  std::vector<std::uint32_t> index;
+
+  const std::uint32_t* begin(std::size_t i) const { return index.data() + i * capacity; }
+  const std::uint32_t* end(std::size_t i) const { return index.data() + i * capacity + count[i]; }
+};
+
+// Builds the list of all j != i with |x_j - x_i| < radius from a grid already binned on x. Grows the slot count
+// and repeats when some particle has more neighbours than slots.
+template <int D>
+void build_neighbor_list(const NeighborGrid<D>& grid, const std::vector<Vec<D>>& x, double radius,
+                         NeighborList& list) {
+  const std::size_t n = x.size();
+  if (list.capacity == 0) list.capacity = 32;
+  for (;;) {
+    list.count.assign(n, 0);
+    list.index.resize(n * list.capacity);
+    const double most = parallel_max(n, 0.0, [&](std::size_t i) {
+      std::uint32_t c = 0;
+      std::uint32_t* slots = list.index.data() + i * list.capacity;
+      grid.for_each_near(x[i], radius, x, [&](std::uint32_t j, double) {
+        if (j == i) return;
+        if (c < list.capacity) slots[c] = j;
+        ++c;
+      });
+      list.count[i] = std::min<std::uint32_t>(c, static_cast<std::uint32_t>(list.capacity));
+      return static_cast<double>(c);
+    });
+    if (most <= static_cast<double>(list.capacity)) return;
+    list.capacity = static_cast<std::size_t>(most * 1.25) + 4;
+  }
+}
+
+}  // namespace slide

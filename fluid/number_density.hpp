@@ -1,0 +1,29 @@
+#pragma once
+#include <cmath>
+#include <vector>
+
+#include "fluid/kernel.hpp"
+#include "fluid/neighbor_grid.hpp"
+#include "fluid/parallel.hpp"
+
+namespace slide {
+
+// Seed eq. 5: n_i = sum_{j != i} W(|r_j - r_i|).
+template <int D>
+double number_density_of(std::size_t i, const std::vector<Vec<D>>& x, const NeighborList& nl, double re) {
+  double n = 0.0;
+  const double re2 = re * re;
+  for (const std::uint32_t* p = nl.begin(i); p != nl.end(i); ++p) {
+    const double r2 = distance_squared<D>(x[*p], x[i]);
+    if (r2 < re2) n += kernel_weight(std::sqrt(r2), re);
+  }
+  return n;
+}
+
+template <int D>
+void compute_number_density(const std::vector<Vec<D>>& x, const NeighborList& nl, double re, std::vector<double>& n) {
+  n.resize(x.size());
+  parallel_for(x.size(), [&](std::size_t i) { n[i] = number_density_of<D>(i, x, nl, re); });
+}
+
+}  // namespace slide

@@ -1,0 +1,32 @@
+#pragma once
+// The one place where loops run in parallel. Physics code calls these helpers and never holds a pragma.
+// Every helper gives results that do not depend on the number of threads: each index is handled by exactly one
+// thread, and reductions are either order-independent (max/min) or done serially over per-index values.
+#include <omp.h>
+
+#include <cstddef>
+
+namespace slide {
+
+template <class F>
+void parallel_for(std::size_t n, F&& f) {
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < static_cast<long>(n); ++i) f(static_cast<std::size_t>(i));
+}
+
+// max over i of f(i), starting from init. Max is exact and associative, so the thread split does not matter.
+template <class F>
+double parallel_max(std::size_t n, double init, F&& f) {
+  double result = init;
+#pragma omp parallel for schedule(static) reduction(max : result)
+  for (long i = 0; i < static_cast<long>(n); ++i) {
+    const double v = f(static_cast<std::size_t>(i));
+    if (v > result) result = v;
+  }
+  return result;
+}
+
+inline int thread_count() { return omp_get_max_threads(); }
+inline void set_thread_count(int n) { omp_set_num_threads(n); }
+
+}  // namespace slide

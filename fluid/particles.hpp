@@ -1,0 +1,76 @@
+#pragma once
+// The particle store: one array per quantity (structure of arrays), all of the same length.
+#include <cstdint>
+#include <vector>
+
+#include "fluid/vec.hpp"
+
+namespace slide {
+
+enum class Kind : std::uint8_t {
+  fluid = 0,  // moves with the flow (water or sediment, told apart by phase)
+  wall = 1,   // first boundary layer: carries pressure, is seen by the pressure gradient and viscosity
+  dummy = 2,  // further boundary layers that complete the kernel support behind the wall
+};
+
+template <int D>
+struct Particles {
+  std::vector<Vec<D>> position;
+  std::vector<Vec<D>> velocity;
+  std::vector<Vec<D>> acceleration;  // total acceleration of the last step (fluid), used by the force time-step limit
+  std::vector<double> pressure;
+  std::vector<double> number_density;
+  std::vector<double> density;    // reference density of the particle's phase, kg/m^3
+  std::vector<double> viscosity;  // dynamic viscosity, Pa s
+  std::vector<std::uint8_t> phase;
+  std::vector<Kind> kind;
+  std::vector<std::uint32_t> id;  // stable identity: the index at creation, kept through re-sorting
+  // Boundary particles: unit normal of their wall face, pointing into the fluid, and their distance behind the
+  // face (positive). Fluid particles hold zeros.
+  std::vector<Vec<D>> wall_normal;
+  std::vector<double> wall_depth;
+
+  std::size_t size() const { return position.size(); }
+
+  std::size_t add(const Vec<D>& x, Kind k, std::uint8_t phase_index, double rho, double mu) {
+    const std::size_t i = size();
+    position.push_back(x);
+    velocity.push_back(Vec<D>::Zero());
+    acceleration.push_back(Vec<D>::Zero());
+    pressure.push_back(0.0);
+    number_density.push_back(0.0);
+    density.push_back(rho);
+    viscosity.push_back(mu);
+    phase.push_back(phase_index);
+    kind.push_back(k);
+    id.push_back(static_cast<std::uint32_t>(i));
+    wall_normal.push_back(Vec<D>::Zero());
+    wall_depth.push_back(0.0);
+    return i;
+  }
+
+  // Reorders every array so that new index i holds what was at old index order[i].
+  void reorder(const std::vector<std::uint32_t>& order) {
+    permute(position, order);
+    permute(velocity, order);
+    permute(acceleration, order);
+    permute(pressure, order);
+    permute(number_density, order);
+    permute(density, order);
+    permute(viscosity, order);
+    permute(phase, order);
+    permute(kind, order);
+    permute(id, order);
+    permute(wall_normal, order);
+    permute(wall_depth, order);
+  }
+
+  template <class T>
+  static void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
+    std::vector<T> out(v.size());
+    for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
+    v.swap(out);
+  }
+};
+
+}  // namespace slide

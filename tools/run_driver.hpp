@@ -1,0 +1,21 @@
+#pragma once
+// The `slide run` and `slide check` commands, as functions returning the process exit code
+// (0 completed, 2 invalid scene or arguments, 3 unstable, 130 interrupted).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace slide::tools {
+
+struct RunArguments {
+  std::filesystem::path scene;
+  std::filesystem::path out;  // empty: runs/<case name>
+  std::vector<std::string> overrides;
+  int threads = 0;            // 0: OpenMP's default
+  bool quiet = false;
+};
+
+int run_command(const RunArguments& args);
+int check_command(const RunArguments& args);
+
+}  // namespace slide::tools

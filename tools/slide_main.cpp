@@ -1,0 +1,41 @@
+// slide: landslide-generated waves with weakly compressible MPS. See README.md and cases/SCHEMA.md.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "cases/scene.hpp"
+#include "tools/run_driver.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"slide: weakly compressible MPS simulator of landslides falling into water"};
+  app.require_subcommand(1);
+  slide::tools::RunArguments args;
+  std::string scene;
+
+  auto* run = app.add_subcommand("run", "run a scene");
+  run->add_option("scene", scene, "scene file (YAML)")->required();
+  run->add_option("--out", args.out, "output folder (default runs/<case name>)");
+  run->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
+  run->add_option("--threads", args.threads, "number of threads (default: all)");
+  run->add_flag("--quiet", args.quiet, "no progress line");
+
+  auto* check = app.add_subcommand("check", "validate a scene and print what it would run; runs nothing");
+  check->add_option("scene", scene, "scene file (YAML)")->required();
+  check->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
+
+  app.add_subcommand("schema", "print the scene reference (every key with unit, default and range)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  args.scene = scene;
+  if (app.got_subcommand("schema")) {
+    std::cout << slide::cases::scene_schema().document("slide scene reference");
+    return 0;
+  }
+  if (app.got_subcommand("check")) return slide::tools::check_command(args);
+  return slide::tools::run_command(args);
+}
