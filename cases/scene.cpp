@@ -52,7 +52,7 @@ Schema make_schema() {
   auto method = S::map(
       "numerical method (weakly compressible MPS, seed eqs. 1-7)",
       {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
-       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", {"standard", "pmin", "symmetric"},
+       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", {"standard", "pmin", "symmetric", "variational"},
                               "symmetric")},
        {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
        {"sound_speed", S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0,
@@ -63,6 +63,12 @@ Schema make_schema() {
        {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
                                {"no_slip", "free_slip"}, "no_slip")},
+       {"wall_pressure", S::choice("pressure of boundary particles: number_density gives wall-layer particles the "
+                                   "pressure of their own number density (dummies none); extrapolated continues the "
+                                   "fluid's pressure into wall and dummy particles (Adami et al. 2012)",
+                                   {"number_density", "extrapolated"}, "number_density")},
+       {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
+                                          "(fluid/artificial_viscosity.hpp)", "", 0.0, 0.0, 1.0)},
        {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; lattice "
                                    "starts from the uncompressed lattice",
                                    {"hydrostatic", "lattice"}, "hydrostatic")},
@@ -201,13 +207,18 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   opt.re_over_dp = m["kernel_radius"].as<double>();
   opt.skin_over_dp = m["neighbor_skin"].as<double>();
   const std::string grad = m["gradient"].as<std::string>();
-  opt.gradient = grad == "standard" ? GradientModel::standard
-                 : grad == "pmin"   ? GradientModel::pmin
-                                    : GradientModel::symmetric;
+  opt.gradient = grad == "standard"    ? GradientModel::standard
+                 : grad == "pmin"      ? GradientModel::pmin
+                 : grad == "symmetric" ? GradientModel::symmetric
+                                       : GradientModel::variational;
   opt.gamma = m["gamma"].as<double>();
   opt.free_surface_beta = m["free_surface_beta"].as<double>();
   opt.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
   opt.wall_slip = m["wall_slip"].as<std::string>() == "no_slip" ? WallSlip::no_slip : WallSlip::free_slip;
+  opt.artificial_viscosity = m["artificial_viscosity"].as<double>();
+  opt.wall_pressure = m["wall_pressure"].as<std::string>() == "extrapolated"
+                          ? FluidOptions<2>::WallPressure::extrapolated
+                          : FluidOptions<2>::WallPressure::number_density;
   opt.gravity = vec2(r["gravity"]);
   opt.cfl = r["time_step"]["cfl"].as<double>();
   opt.viscous_number = r["time_step"]["viscous_number"].as<double>();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fluid/artificial_viscosity.hpp"
 #include "fluid/number_density.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/wall_pressure.hpp"
@@ -52,9 +53,14 @@ void Simulation<D>::compute_pressure() {
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
+  const bool extrapolate = options.wall_pressure == FluidOptions<D>::WallPressure::extrapolated;
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] == Kind::fluid) return;
-    double p = extrapolated_wall_pressure<D>(i, P, list_, r_e, options.gravity);
+    double p = 0.0;
+    if (extrapolate)
+      p = extrapolated_wall_pressure<D>(i, P, list_, r_e, options.gravity);
+    else if (P.kind[i] == Kind::wall && P.number_density[i] >= surface_n)
+      p = eos.pressure(P.number_density[i], P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
@@ -99,8 +105,11 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   // Explicit part: viscosity and gravity give the predicted velocity and position (fluid only).
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
-    P.acceleration[i] =
-        viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip) + options.gravity;
+    Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip);
+    if (options.artificial_viscosity > 0.0)
+      a += artificial_viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, options.artificial_viscosity,
+                                              options.sound_speed, options.dp);
+    P.acceleration[i] = a + options.gravity;
   });
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
@@ -113,15 +122,17 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
 
   // Pressure-gradient correction.
   const GradientModel model = options.gradient;
+  const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
-    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P.position, P.pressure, list_, r_e,
-                                                               lattice.n0);
+    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e,
+                                                               lattice.n0, lattice.kappa);
   });
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += dt * scratch_[i];
     P.position[i] += (dt * dt) * scratch_[i];
+    if (damping != 1.0) P.velocity[i] *= damping;
     P.acceleration[i] += scratch_[i];
   });
 

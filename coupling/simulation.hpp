@@ -28,6 +28,12 @@ struct FluidOptions {
   double free_surface_beta = 0.97;  // n < beta n0: free-surface particle, pressure set to zero
   bool clamp_negative_pressure = true;
   WallSlip wall_slip = WallSlip::no_slip;
+  // number_density: wall-layer particles take the pressure of their own number density (seed eq. 7), dummies none
+  // (classic MPS: a particle pressing on the wall raises the wall's pressure). extrapolated: wall and dummy
+  // particles continue the fluid's pressure field (fluid/wall_pressure.hpp).
+  enum class WallPressure { number_density, extrapolated } wall_pressure = WallPressure::number_density;
+  double artificial_viscosity = 0.0;  // Monaghan alpha; 0 = off
+  double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while relaxing
   Vec<D> gravity = Vec<D>::Zero();
   // Time step: dt = min(cfl dp / (c0 + |u|max), viscous_number dp^2 / nu_max, force_number sqrt(dp / |a|max), dt_max)
   double cfl = 0.2;

@@ -8,6 +8,7 @@
 
 #include "fluid/kernel.hpp"
 #include "fluid/neighbor_grid.hpp"
+#include "fluid/particles.hpp"
 
 namespace slide {
 
@@ -15,6 +16,7 @@ enum class GradientModel {
   standard,   // seed eq. 3: (p_j - p_i)
   pmin,       // (p_j - p_min,i)
   symmetric,  // (p_i + p_j)
+  variational,  // (p_i + p_j) with the kernel derivative: energy-conserving
 };
 
 inline std::string_view to_string(GradientModel m) {
@@ -22,6 +24,7 @@ inline std::string_view to_string(GradientModel m) {
     case GradientModel::standard: return "standard";
     case GradientModel::pmin: return "pmin";
     case GradientModel::symmetric: return "symmetric";
+    case GradientModel::variational: return "variational";
   }
   return "?";
 }
@@ -50,12 +53,20 @@ Vec<D> mps_gradient(std::size_t i, const std::vector<Vec<D>>& x, const Field& ph
 //    among i and its neighbours, so every pair term is repulsive:
 //      grad p_i = d / n0 * sum (p_j - p_min,i) / |r_ij|^2 * r_ij * W.
 //  * symmetric (Oochi, Koshizuka & Sakai 2010; Tanaka & Masunaga 2010): the pair force is antisymmetric, so the
-//    pressure forces conserve linear momentum exactly:
+//    pressure forces between fluid particles conserve linear momentum exactly:
 //      grad p_i = d / n0 * sum (p_i + p_j) / |r_ij|^2 * r_ij * W.
 //    On a full regular lattice sum r_ij W / r^2 = 0, so it equals eq. 3 there.
+//    Against a boundary particle j (wall, dummy) the pair vector is split along the wall's normal n_j: the normal
+//    part keeps (p_i + p_j), which holds the fluid off the wall, and the tangential part uses (p_j - p_i). Why: with
+//    (p_i + p_j) in every direction, a fluid layer next to a row of fixed wall particles has a negative tangential
+//    stiffness (a repulsive pair force pushes a particle that slides along the wall further away from alignment),
+//    and in a still tank that layer slides and stirs the tank within 0.1 s (measured here). A wall can only push
+//    along its normal; the tangential part then carries just the pressure difference, which completes the
+//    gradient along the wall.
 template <int D, GradientModel M>
-Vec<D> pressure_gradient_of(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>& p,
-                            const NeighborList& nl, double re, double n0) {
+Vec<D> pressure_gradient_of(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0) {
+  const auto& x = P.position;
+  const auto& p = P.pressure;
   const double re2 = re * re;
   double p_ref = p[i];
   if constexpr (M == GradientModel::pmin) {
@@ -68,24 +79,54 @@ Vec<D> pressure_gradient_of(std::size_t i, const std::vector<Vec<D>>& x, const s
     const Vec<D> rij = x[j] - x[i];
     const double r2 = rij.squaredNorm();
     if (r2 >= re2) continue;
-    const double w = kernel_weight(std::sqrt(r2), re);
-    double dp;
-    if constexpr (M == GradientModel::symmetric)
-      dp = p[i] + p[j];
-    else
-      dp = p[j] - p_ref;
-    g += (dp * w / r2) * rij;
+    const double w = kernel_weight(std::sqrt(r2), re) / r2;
+    if constexpr (M == GradientModel::symmetric) {
+      if (P.kind[j] == Kind::fluid) {
+        g += ((p[i] + p[j]) * w) * rij;
+      } else {
+        const Vec<D>& n = P.wall_normal[j];
+        const Vec<D> normal_part = rij.dot(n) * n;
+        g += ((p[i] + p[j]) * w) * normal_part + ((p[j] - p[i]) * w) * (rij - normal_part);
+      }
+    } else {
+      g += ((p[j] - p_ref) * w) * rij;
+    }
   }
   return (D / n0) * g;
 }
 
+//  * variational: the symmetric pair sum with the kernel's derivative in place of W / r,
+//      grad p_i = 1 / (kappa n0) * sum (p_i + p_j) (-W'(r_ij)) r_ij / |r_ij|,  kappa = sum(-W' r) / (d n0),
+//    which is -dE/dr_i of the energy E = sum_i Psi(n_i) with Psi'(n) = p(n) / (rho kappa n0) (the MPS analogue of
+//    variational SPH, e.g. Bonet & Lok 1999; Price 2012). Its forces conserve energy as well as momentum, so a
+//    damped still tank settles into an equilibrium, which the W / r^2 form, not derived from any energy, does not.
+//    Exact for a linear field on the regular lattice (kappa from that lattice).
 template <int D>
-Vec<D> pressure_gradient(GradientModel m, std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>& p,
-                         const NeighborList& nl, double re, double n0) {
+Vec<D> variational_pressure_gradient(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
+                                     double n0, double kappa) {
+  const auto& x = P.position;
+  const auto& p = P.pressure;
+  const double re2 = re * re;
+  Vec<D> g = Vec<D>::Zero();
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
+    const std::uint32_t j = *q;
+    const Vec<D> rij = x[j] - x[i];
+    const double r2 = rij.squaredNorm();
+    if (r2 >= re2) continue;
+    const double r = std::sqrt(r2);
+    g += ((p[i] + p[j]) * -kernel_derivative(r, re) / r) * rij;
+  }
+  return (1.0 / (kappa * n0)) * g;
+}
+
+template <int D>
+Vec<D> pressure_gradient(GradientModel m, std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
+                         double n0, double kappa) {
   switch (m) {
-    case GradientModel::standard: return pressure_gradient_of<D, GradientModel::standard>(i, x, p, nl, re, n0);
-    case GradientModel::pmin: return pressure_gradient_of<D, GradientModel::pmin>(i, x, p, nl, re, n0);
-    case GradientModel::symmetric: return pressure_gradient_of<D, GradientModel::symmetric>(i, x, p, nl, re, n0);
+    case GradientModel::standard: return pressure_gradient_of<D, GradientModel::standard>(i, P, nl, re, n0);
+    case GradientModel::pmin: return pressure_gradient_of<D, GradientModel::pmin>(i, P, nl, re, n0);
+    case GradientModel::symmetric: return pressure_gradient_of<D, GradientModel::symmetric>(i, P, nl, re, n0);
+    case GradientModel::variational: return variational_pressure_gradient<D>(i, P, nl, re, n0, kappa);
   }
   return Vec<D>::Zero();
 }

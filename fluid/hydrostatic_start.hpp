@@ -54,17 +54,27 @@ double stretch_for_density_ratio(double dp, double re, double target) {
   return 0.5 * (lo + hi);
 }
 
-// Compresses the fluid particles' vertical positions as described above. g is the magnitude of gravity, which
-// points along -(last axis). Returns the deepest water (m) of any run, nominal (uncompressed) height.
+// Compresses the fluid particles' vertical positions as described above, and moves boundary particles beside a
+// compressed run by the same vertical shift as the nearest run at their height: the symmetric pressure gradient
+// feels any misalignment between the fluid's rows and the wall's as a force, so the wall lattice must continue the
+// fluid's. g is the magnitude of gravity, which points along -(last axis). Returns the deepest water (m) of any
+// run, nominal (uncompressed) height. With apply = false only the depth is measured.
 template <int D>
 double compress_hydrostatically(Particles<D>& P, double dp, double re, const EquationOfState& eos, double g,
                                 bool apply) {
   constexpr int up = D - 1;
+  struct Run {
+    Vec<D> base;                    // horizontal position (vertical component unused)
+    std::vector<double> y_nominal;  // bottom to top
+    std::vector<double> shift;      // new minus nominal
+  };
+  std::vector<Run> runs;
   // Group fluid particles by lattice column.
   std::map<std::array<long, 2>, std::vector<std::size_t>> columns;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] != Kind::fluid) continue;
-    std::array<long, 2> key{std::lround(P.position[i][0] / dp * 4.0), D == 3 ? std::lround(P.position[i][1] / dp * 4.0) : 0L};
+    std::array<long, 2> key{std::lround(P.position[i][0] / dp * 4.0),
+                            D == 3 ? std::lround(P.position[i][1] / dp * 4.0) : 0L};
     columns[key].push_back(i);
   }
   double deepest = 0.0;
@@ -81,6 +91,7 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
       const double bottom = P.position[members[start]][up] - 0.5 * dp;
       deepest = std::max(deepest, surface - bottom);
       if (apply) {
+        Run run{P.position[members[start]], {}, {}};
         // Walk up from the support one spacing below the bottom particle, shrinking each gap.
         double below_nominal = P.position[members[start]][up] - dp;
         double below_new = below_nominal;
@@ -93,10 +104,36 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
           below_nominal = y;
           below_new += gap;
           P.position[members[m]][up] = below_new;
+          run.y_nominal.push_back(y);
+          run.shift.push_back(below_new - y);
         }
+        runs.push_back(std::move(run));
       }
       start = end;
     }
+  }
+  if (!apply) return deepest;
+  // Boundary particles: the shift of the horizontally nearest run that spans their height (within re
+  // horizontally); above a run's top they take its top shift, below its bottom none.
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] == Kind::fluid) continue;
+    const Vec<D>& x = P.position[i];
+    double best_h2 = re * re, shift = 0.0;
+    for (const Run& run : runs) {
+      double h2 = 0.0;
+      for (int k = 0; k < up; ++k) h2 += (run.base[k] - x[k]) * (run.base[k] - x[k]);
+      if (h2 >= best_h2 - 1e-12 * dp * dp || x[up] < run.y_nominal.front() - 0.5 * dp) continue;
+      best_h2 = h2;
+      const auto& yn = run.y_nominal;
+      const std::size_t above = std::upper_bound(yn.begin(), yn.end(), x[up]) - yn.begin();
+      if (above == 0) shift = run.shift.front();
+      else if (above == yn.size()) shift = run.shift.back();
+      else {
+        const double t = (x[up] - yn[above - 1]) / (yn[above] - yn[above - 1]);
+        shift = (1 - t) * run.shift[above - 1] + t * run.shift[above];
+      }
+    }
+    P.position[i][up] += shift;
   }
   return deepest;
 }

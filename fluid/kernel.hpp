@@ -18,13 +18,23 @@ inline double kernel_weight(double r, double re) {
 struct LatticeConstants {
   double n0 = 0.0;
   double lambda = 0.0;
+  // kappa = sum(-W'(r) r) / (d n0): normalises gradients built on the kernel derivative (exact for a linear field
+  // on the lattice); 1 in the continuum limit.
+  double kappa = 0.0;
 };
+
+// Derivative of the seed kernel: W'(r) = -3 (1 - r/re)^2 / re for r < re.
+inline double kernel_derivative(double r, double re) {
+  if (r >= re) return 0.0;
+  const double s = 1.0 - r / re;
+  return -3.0 * s * s / re;
+}
 
 // Sums over a square (2-D) or cubic (3-D) lattice of spacing dp, all points within re except the origin.
 template <int D>
 LatticeConstants lattice_constants(double dp, double re) {
   const int m = static_cast<int>(std::ceil(re / dp)) + 1;
-  double sum_w = 0.0, sum_wr2 = 0.0;
+  double sum_w = 0.0, sum_wr2 = 0.0, sum_dwr = 0.0;
   const int kmin = D == 3 ? -m : 0, kmax = D == 3 ? m : 0;
   for (int i = -m; i <= m; ++i)
     for (int j = -m; j <= m; ++j)
@@ -34,8 +44,9 @@ LatticeConstants lattice_constants(double dp, double re) {
         const double w = kernel_weight(std::sqrt(r2), re);
         sum_w += w;
         sum_wr2 += w * r2;
+        sum_dwr += -kernel_derivative(std::sqrt(r2), re) * std::sqrt(r2);
       }
-  return {sum_w, sum_wr2 / sum_w};
+  return {sum_w, sum_wr2 / sum_w, sum_dwr / (D * sum_w)};
 }
 
 // Continuum limits used to check the lattice sums: integral of W over the kernel support (2-D: pi re^2 / 10,
