@@ -63,10 +63,12 @@ Schema make_schema() {
        {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
                                {"no_slip", "free_slip"}, "no_slip")},
-       {"wall_pressure", S::choice("pressure of boundary particles: number_density gives wall-layer particles the "
-                                   "pressure of their own number density (dummies none); extrapolated continues the "
-                                   "fluid's pressure into wall and dummy particles (Adami et al. 2012)",
-                                   {"number_density", "extrapolated"}, "number_density")},
+       {"wall_pressure", S::choice("pressure of boundary particles: mirror takes the fluid's pressure at the "
+                                   "particle's mirror image plus the hydrostatic head; number_density gives "
+                                   "wall-layer particles the pressure of their own number density (dummies none); "
+                                   "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
+                                   "et al. 2012) (fluid/wall_pressure.hpp)",
+                                   {"mirror", "number_density", "extrapolated"}, "mirror")},
        {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
                                           "(fluid/artificial_viscosity.hpp)", "", 0.0, 0.0, 1.0)},
        {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; lattice "
@@ -216,9 +218,10 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   opt.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
   opt.wall_slip = m["wall_slip"].as<std::string>() == "no_slip" ? WallSlip::no_slip : WallSlip::free_slip;
   opt.artificial_viscosity = m["artificial_viscosity"].as<double>();
-  opt.wall_pressure = m["wall_pressure"].as<std::string>() == "extrapolated"
-                          ? FluidOptions<2>::WallPressure::extrapolated
-                          : FluidOptions<2>::WallPressure::number_density;
+  const std::string wall_pressure = m["wall_pressure"].as<std::string>();
+  opt.wall_pressure = wall_pressure == "extrapolated"     ? FluidOptions<2>::WallPressure::extrapolated
+                      : wall_pressure == "number_density" ? FluidOptions<2>::WallPressure::number_density
+                                                          : FluidOptions<2>::WallPressure::mirror;
   opt.gravity = vec2(r["gravity"]);
   opt.cfl = r["time_step"]["cfl"].as<double>();
   opt.viscous_number = r["time_step"]["viscous_number"].as<double>();

@@ -44,7 +44,17 @@ template <int D>
 void Simulation<D>::compute_pressure() {
   auto& P = particles;
   const double r_e = re();
-  compute_number_density<D>(P.position, list_, r_e, P.number_density);
+  using WP = typename FluidOptions<D>::WallPressure;
+  if (options.wall_pressure == WP::mirror) {
+    parallel_for(P.size(), [&](std::size_t i) {
+      if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, options.dp);
+    });
+    parallel_for(P.size(), [&](std::size_t i) {
+      P.number_density[i] = weighted_number_density_of<D>(i, P.position, P.wall_fill, list_, r_e);
+    });
+  } else {
+    compute_number_density<D>(P.position, list_, r_e, P.number_density);
+  }
   const double surface_n = options.free_surface_beta * lattice.n0;
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
@@ -53,12 +63,13 @@ void Simulation<D>::compute_pressure() {
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
-  const bool extrapolate = options.wall_pressure == FluidOptions<D>::WallPressure::extrapolated;
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] == Kind::fluid) return;
     double p = 0.0;
-    if (extrapolate)
+    if (options.wall_pressure == WP::extrapolated)
       p = extrapolated_wall_pressure<D>(i, P, list_, r_e, options.gravity);
+    else if (options.wall_pressure == WP::mirror)
+      p = mirror_wall_pressure<D>(i, P, grid_, options.dp, options.gravity);
     else if (P.kind[i] == Kind::wall && P.number_density[i] >= surface_n)
       p = eos.pressure(P.number_density[i], P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;

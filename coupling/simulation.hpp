@@ -30,8 +30,9 @@ struct FluidOptions {
   WallSlip wall_slip = WallSlip::no_slip;
   // number_density: wall-layer particles take the pressure of their own number density (seed eq. 7), dummies none
   // (classic MPS: a particle pressing on the wall raises the wall's pressure). extrapolated: wall and dummy
-  // particles continue the fluid's pressure field (fluid/wall_pressure.hpp).
-  enum class WallPressure { number_density, extrapolated } wall_pressure = WallPressure::number_density;
+  // particles continue the fluid's pressure field; mirror: they take the pressure at their mirror image in the
+  // fluid plus the hydrostatic head (fluid/wall_pressure.hpp).
+  enum class WallPressure { number_density, extrapolated, mirror } wall_pressure = WallPressure::mirror;
   double artificial_viscosity = 0.0;  // Monaghan alpha; 0 = off
   double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while relaxing
   Vec<D> gravity = Vec<D>::Zero();

@@ -20,6 +20,19 @@ double number_density_of(std::size_t i, const std::vector<Vec<D>>& x, const Neig
   return n;
 }
 
+// The same with each neighbour weighted by fill_j (boundary particles that stand for mirrored fluid).
+template <int D>
+double weighted_number_density_of(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>& fill,
+                                  const NeighborList& nl, double re) {
+  double n = 0.0;
+  const double re2 = re * re;
+  for (const std::uint32_t* p = nl.begin(i); p != nl.end(i); ++p) {
+    const double r2 = distance_squared<D>(x[*p], x[i]);
+    if (r2 < re2) n += fill[*p] * kernel_weight(std::sqrt(r2), re);
+  }
+  return n;
+}
+
 template <int D>
 void compute_number_density(const std::vector<Vec<D>>& x, const NeighborList& nl, double re, std::vector<double>& n) {
   n.resize(x.size());

@@ -29,6 +29,9 @@ struct Particles {
   // face (positive). Fluid particles hold zeros.
   std::vector<Vec<D>> wall_normal;
   std::vector<double> wall_depth;
+  // Boundary particles: the weight with which they count in their neighbours' number density (1 unless the wall
+  // model mirrors the fluid, fluid/wall_pressure.hpp). Fluid particles hold 1.
+  std::vector<double> wall_fill;
 
   std::size_t size() const { return position.size(); }
 
@@ -46,6 +49,7 @@ struct Particles {
     id.push_back(static_cast<std::uint32_t>(i));
     wall_normal.push_back(Vec<D>::Zero());
     wall_depth.push_back(0.0);
+    wall_fill.push_back(1.0);
     return i;
   }
 
@@ -63,6 +67,7 @@ struct Particles {
     permute(id, order);
     permute(wall_normal, order);
     permute(wall_depth, order);
+    permute(wall_fill, order);
   }
 
   template <class T>

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "fluid/kernel.hpp"
@@ -31,6 +32,58 @@ double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const Ne
   }
   if (sum_w <= 0.0) return 0.0;
   return (sum_pw + sum_head) / sum_w;
+}
+
+// Pressure of a boundary particle from its mirror image in the fluid (fixed ghost particles: Takeda, Miyama & Sekiya
+// 1994; Marrone et al. 2011): the image point x_m = x_w + 2 d_w n_w lies as far in front of the face as the particle
+// lies behind it, its pressure is the Shepard interpolation of the fluid's pressure over a radius of 1.5 dp, and the
+// hydrostatic head between image and particle is added (wall at rest):
+//   p_w = sum_f p_f W(|x_f - x_m|; 1.5 dp) / sum_f W(|x_f - x_m|; 1.5 dp) + rho_0 g . (x_w - x_m).
+// Why not the plain weighted mean around the wall particle: near a free surface it smears the surface's zero
+// pressure into the rows below, so the wall pushes surface particles off it; the image sees the same neighbourhood
+// as the fluid would. No fluid near the image (a wall above the water): p = 0.
+// How much fluid surrounds a boundary particle's mirror image, relative to a full lattice neighbourhood (capped at 1):
+//   fill_w = min(1, sum_f W(|x_f - x_m|; 1.5 dp) / (sum_lattice W(; 1.5 dp) / 2)).
+// The half makes any image inside the water count fully, even one beside the wall, whose lattice neighbourhood
+// lacks the wall side, or one among disordered particles; an image a spacing above the surface gets 0.06.
+// In the mirror model a boundary particle counts in the fluid's number density with this weight: beside water it
+// stands for the mirrored fluid particle (weight 1), above the water it is not counted, so a free surface meeting a
+// wall has the same number density, hence pressure, as anywhere else instead of being crowded by the dry wall.
+// A fluid particle closer to the boundary particle than the lattice spacing (one that presses into the wall, wet or
+// dry) also raises the weight, to 1 at half a spacing: proximity = sum_f W(|x_f - x_w|; dp) / W(dp / 2; dp), so
+// the wall can never vanish in front of a particle that approaches it.
+template <int D>
+double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, double dp) {
+  const double radius = 1.5 * dp;
+  // Full neighbourhood on the lattice: the point itself and its 2 D nearest neighbours at dp; half of it.
+  const double half_full = 0.5 * (1.0 + 2 * D * kernel_weight(dp, radius));
+  const Vec<D> image = P.position[w] + (2.0 * P.wall_depth[w]) * P.wall_normal[w];
+  double sum_w = 0.0;
+  grid.for_each_near(image, radius, P.position, [&](std::uint32_t f, double r2) {
+    if (P.kind[f] == Kind::fluid) sum_w += kernel_weight(std::sqrt(r2), radius);
+  });
+  double proximity = 0.0;
+  grid.for_each_near(P.position[w], dp, P.position, [&](std::uint32_t f, double r2) {
+    if (P.kind[f] == Kind::fluid) proximity += kernel_weight(std::sqrt(r2), dp);
+  });
+  return std::min(1.0, sum_w / half_full + proximity / kernel_weight(0.5 * dp, dp));
+}
+
+template <int D>
+double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, double dp,
+                            const Vec<D>& gravity) {
+  const double radius = 1.5 * dp;
+  const Vec<D> image = P.position[w] + (2.0 * P.wall_depth[w]) * P.wall_normal[w];
+  double sum_w = 0.0, sum_pw = 0.0, sum_rho_w = 0.0;
+  grid.for_each_near(image, radius, P.position, [&](std::uint32_t f, double r2) {
+    if (P.kind[f] != Kind::fluid) return;
+    const double weight = kernel_weight(std::sqrt(r2), radius);
+    sum_w += weight;
+    sum_pw += weight * P.pressure[f];
+    sum_rho_w += weight * P.density[f];
+  });
+  if (sum_w <= 0.0) return 0.0;
+  return (sum_pw + sum_rho_w * gravity.dot(P.position[w] - image)) / sum_w;
 }
 
 }  // namespace slide

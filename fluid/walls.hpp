@@ -38,13 +38,18 @@ inline std::vector<BoundaryPoint> polyline_boundary(const std::vector<Vec<2>>& f
     const Vec<2> left(-dir[s][1], dir[s][0]);
     inward[s] = fluid_on_left ? left : Vec<2>(-left);
   }
+  // A closed face (last vertex equal to the first) has a corner at every vertex.
+  const bool closed = ns >= 3 && (face.front() - face.back()).norm() <= 1e-12 * (1.0 + face.front().norm());
   std::vector<BoundaryPoint> out;
   for (int k = 0; k < layers; ++k) {
     const double off = (k + 0.5) * dp;
     // Offset vertices with mitred corners.
     std::vector<Vec<2>> v(nv);
     for (std::size_t i = 0; i < nv; ++i) {
-      if (i == 0) {
+      if (closed && (i == 0 || i == nv - 1)) {
+        const Vec<2> a = inward[ns - 1], b = inward[0];
+        v[i] = face[i] - off * (a + b) / (1.0 + a.dot(b));
+      } else if (i == 0) {
         v[i] = face[i] - off * inward[0];
       } else if (i == nv - 1) {
         v[i] = face[i] - off * inward[ns - 1];
@@ -58,8 +63,17 @@ inline std::vector<BoundaryPoint> polyline_boundary(const std::vector<Vec<2>>& f
       const double len = (p1 - p0).norm();
       if (len <= 1e-12) continue;
       const Vec<2> t = (p1 - p0) / len;
-      const bool start_corner = s > 0, end_corner = s + 1 < ns;
-      auto push = [&](const Vec<2>& x) { out.push_back({x, inward[s], off, k}); };
+      const bool start_corner = closed || s > 0, end_corner = closed || s + 1 < ns;
+      auto push = [&](const Vec<2>& x) {
+        // A particle on a mitred corner belongs to both faces: its normal is the bisector and its depth the
+        // distance to the face's vertex, so that its mirror image (x + 2 depth normal) is the fluid corner.
+        if (start_corner && (x - p0).squaredNorm() < 1e-20 * dp * dp) {
+          const Vec<2> to_face = face[s] - x;
+          out.push_back({x, to_face.normalized(), to_face.norm(), k});
+        } else {
+          out.push_back({x, inward[s], off, k});
+        }
+      };
       if (start_corner && end_corner) {
         const int n = std::max(1, static_cast<int>(std::lround(len / dp)));
         for (int m = 0; m < n; ++m) push(p0 + (len * m / n) * t);
