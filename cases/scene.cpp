@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 
+#include "coupling/equilibrium_column.hpp"
 #include "fluid/hydrostatic_start.hpp"
 #include "fluid/walls.hpp"
 
@@ -52,7 +53,7 @@ Schema make_schema() {
   auto method = S::map(
       "numerical method (weakly compressible MPS, seed eqs. 1-7)",
       {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
-       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", {"standard", "pmin", "symmetric", "variational"},
+       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", {"standard", "pmin", "symmetric", "variational", "difference"},
                               "symmetric")},
        {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
        {"sound_speed", S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0,
@@ -212,7 +213,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   opt.gradient = grad == "standard"    ? GradientModel::standard
                  : grad == "pmin"      ? GradientModel::pmin
                  : grad == "symmetric" ? GradientModel::symmetric
-                                       : GradientModel::variational;
+                 : grad == "variational" ? GradientModel::variational
+                                         : GradientModel::difference;
   opt.gamma = m["gamma"].as<double>();
   opt.free_surface_beta = m["free_surface_beta"].as<double>();
   opt.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
@@ -361,7 +363,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
 
   // Sound speed and hydrostatic start.
   const double g = -opt.gravity[1];
-  scene->deepest_water = compress_hydrostatically<2>(P, dp, re, EquationOfState(1.0, 1.0, opt.gamma), g, false);
+  scene->deepest_water = compress_hydrostatically<2>(P, dp, re, EquationOfState(1.0, 1.0, opt.gamma), g, false, {});
   const double c0_key = m["sound_speed"].as<double>();
   if (c0_key > 0.0) {
     opt.sound_speed = c0_key;
@@ -375,7 +377,15 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   }
   if (m["initial_state"].as<std::string>() == "hydrostatic" && g > 0.0) {
     const LatticeConstants lc = lattice_constants<2>(dp, re);
-    compress_hydrostatically<2>(P, dp, re, EquationOfState(lc.n0, opt.sound_speed, opt.gamma), g, true);
+    const int rows = static_cast<int>(std::lround(scene->deepest_water / dp));
+    try {
+      const EquilibriumColumn column = equilibrium_column(opt, phase_props[0].first, phase_props[0].second, rows);
+      scene->equilibrium = column;
+      compress_hydrostatically<2>(P, dp, re, EquationOfState(lc.n0, opt.sound_speed, opt.gamma), g, true,
+                                  column.gap_from_top);
+    } catch (const std::runtime_error& e) {
+      throw SceneError("method.initial_state", std::string("hydrostatic start failed: ") + e.what());
+    }
   }
 
   // Domain.

@@ -2,12 +2,14 @@
 // A scene: the YAML file's schema, and the simulation it builds.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
 #include "cases/schema.hpp"
+#include "coupling/equilibrium_column.hpp"
 #include "coupling/simulation.hpp"
 
 namespace slide::cases {
@@ -42,6 +44,7 @@ struct Scene {
   double deepest_water = 0.0;      // m, nominal
   std::string sound_speed_source;  // how c0 was chosen
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
+  std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
 };
 
 // The scene format. Its document() is cases/SCHEMA.md.

@@ -59,9 +59,12 @@ double stretch_for_density_ratio(double dp, double re, double target) {
 // feels any misalignment between the fluid's rows and the wall's as a force, so the wall lattice must continue the
 // fluid's. g is the magnitude of gravity, which points along -(last axis). Returns the deepest water (m) of any
 // run, nominal (uncompressed) height. With apply = false only the depth is measured.
+// gap_from_top, when not empty, gives the equilibrium gaps by depth index (entry k: below the k-th particle from
+// the top of a run, the last one of a run being its gap to the support), which replace the equation-of-state
+// estimate for runs no deeper than it covers (coupling/equilibrium_column.hpp computes them).
 template <int D>
 double compress_hydrostatically(Particles<D>& P, double dp, double re, const EquationOfState& eos, double g,
-                                bool apply) {
+                                bool apply, const std::vector<double>& gap_from_top) {
   constexpr int up = D - 1;
   struct Run {
     Vec<D> base;                    // horizontal position (vertical component unused)
@@ -100,7 +103,10 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
           const double depth_mid = surface - 0.5 * (y + below_nominal);
           const double rho = P.density[members[m]];
           const double target = eos.number_density_ratio(rho * g * depth_mid, rho);
-          const double gap = (y - below_nominal) * stretch_for_density_ratio<D>(dp, re, target);
+          const std::size_t from_top = end - 1 - m;
+          const double gap = from_top < gap_from_top.size()
+                                 ? gap_from_top[from_top] * (y - below_nominal) / dp
+                                 : (y - below_nominal) * stretch_for_density_ratio<D>(dp, re, target);
           below_nominal = y;
           below_new += gap;
           P.position[members[m]][up] = below_new;

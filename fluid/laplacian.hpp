@@ -23,7 +23,7 @@ auto mps_laplacian(std::size_t i, const std::vector<Vec<D>>& x, const Field& phi
     if (r2 >= re2) continue;
     sum += (phi[j] - phi[i]) * kernel_weight(std::sqrt(r2), re);
   }
-  return (2.0 * D / (lambda * n0)) * sum;
+  return Value((2.0 * D / (lambda * n0)) * sum);  // evaluated: an Eigen expression would outlive `sum`
 }
 
 }  // namespace slide

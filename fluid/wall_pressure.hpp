@@ -34,14 +34,6 @@ double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const Ne
   return (sum_pw + sum_head) / sum_w;
 }
 
-// Pressure of a boundary particle from its mirror image in the fluid (fixed ghost particles: Takeda, Miyama & Sekiya
-// 1994; Marrone et al. 2011): the image point x_m = x_w + 2 d_w n_w lies as far in front of the face as the particle
-// lies behind it, its pressure is the Shepard interpolation of the fluid's pressure over a radius of 1.5 dp, and the
-// hydrostatic head between image and particle is added (wall at rest):
-//   p_w = sum_f p_f W(|x_f - x_m|; 1.5 dp) / sum_f W(|x_f - x_m|; 1.5 dp) + rho_0 g . (x_w - x_m).
-// Why not the plain weighted mean around the wall particle: near a free surface it smears the surface's zero
-// pressure into the rows below, so the wall pushes surface particles off it; the image sees the same neighbourhood
-// as the fluid would. No fluid near the image (a wall above the water): p = 0.
 // How much fluid surrounds a boundary particle's mirror image, relative to a full lattice neighbourhood (capped at 1):
 //   fill_w = min(1, sum_f W(|x_f - x_m|; 1.5 dp) / (sum_lattice W(; 1.5 dp) / 2)).
 // The half makes any image inside the water count fully, even one beside the wall, whose lattice neighbourhood
@@ -69,15 +61,26 @@ double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& 
   return std::min(1.0, sum_w / half_full + proximity / kernel_weight(0.5 * dp, dp));
 }
 
+// Pressure of a boundary particle from its mirror image in the fluid (fixed ghost particles: Takeda, Miyama & Sekiya
+// 1994; Marrone et al. 2011): the image point x_m = x_w + 2 d_w n_w lies as far in front of the face as the particle
+// lies behind it; its pressure is a Shepard interpolation of the fluid's pressure around x_m, and the hydrostatic
+// head between image and particle is added (wall at rest):
+//   p_w = sum_f p_f w_f / sum_f w_f + rho_0 g . (x_w - x_m),
+//   w_f = W(|x_f - x_m|; dp) + 0.05 W(|x_f - x_m|; 1.5 dp).
+// The narrow kernel makes a particle sitting on the image (the mirrored lattice partner) dominate, so a wall beside
+// still water carries exactly its partner's pressure, including at a free surface where the pressure profile is not
+// linear; the wide kernel's small share takes over smoothly when no particle is near the image. Why not the plain
+// weighted mean around the wall particle: near a free surface it smears the surface's zero pressure into the rows
+// below, and the wall pushes the surface particles off it. No fluid near the image (a wall above the water): p = 0.
 template <int D>
 double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, double dp,
                             const Vec<D>& gravity) {
-  const double radius = 1.5 * dp;
   const Vec<D> image = P.position[w] + (2.0 * P.wall_depth[w]) * P.wall_normal[w];
   double sum_w = 0.0, sum_pw = 0.0, sum_rho_w = 0.0;
-  grid.for_each_near(image, radius, P.position, [&](std::uint32_t f, double r2) {
+  grid.for_each_near(image, 1.5 * dp, P.position, [&](std::uint32_t f, double r2) {
     if (P.kind[f] != Kind::fluid) return;
-    const double weight = kernel_weight(std::sqrt(r2), radius);
+    const double r = std::sqrt(r2);
+    const double weight = kernel_weight(r, dp) + 0.05 * kernel_weight(r, 1.5 * dp);
     sum_w += weight;
     sum_pw += weight * P.pressure[f];
     sum_rho_w += weight * P.density[f];

@@ -67,8 +67,17 @@ struct TempGuard {
   }
 };
 
+// Object creation properties without modification times, so that the same data gives byte-identical files
+// (results must be reproducible bit for bit, across runs and thread counts).
+H5Handle untimed_properties(hid_t property_class, const std::filesystem::path& path) {
+  H5Handle plist = check(H5Pcreate(property_class), H5Pclose, path, "cannot create property list");
+  check(H5Pset_obj_track_times(plist.get(), false), path, "cannot disable object times");
+  return plist;
+}
+
 H5Handle create_file(const std::filesystem::path& path) {
-  return check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, path,
+  H5Handle fcpl = untimed_properties(H5P_FILE_CREATE, path);
+  return check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT), H5Fclose, path,
                "cannot create file");
 }
 
@@ -80,7 +89,8 @@ void write_dataset(hid_t file, const std::filesystem::path& path, const char* na
   const int rank = cols == 0 ? 1 : 2;
   H5Handle space = check(H5Screate_simple(rank, dims, nullptr), H5Sclose, path,
                          fmt::format("cannot create dataspace for /{}", name));
-  H5Handle ds = check(H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+  H5Handle dcpl = untimed_properties(H5P_DATASET_CREATE, path);
+  H5Handle ds = check(H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(),
                                  H5P_DEFAULT),
                       H5Dclose, path, fmt::format("cannot create dataset /{}", name));
   if (rows > 0) {
@@ -209,7 +219,8 @@ void SnapshotWriter::write_master() const {
   {
     H5Handle file = create_file(tmp);
     const hid_t fid = file.get();
-    H5Handle group = check(H5Gcreate2(fid, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+    H5Handle gcpl = untimed_properties(H5P_GROUP_CREATE, tmp);
+    H5Handle group = check(H5Gcreate2(fid, "snapshots", H5P_DEFAULT, gcpl.get(), H5P_DEFAULT),
                            H5Gclose, tmp, "cannot create group /snapshots");
     std::vector<double> times;
     std::vector<int64_t> steps;

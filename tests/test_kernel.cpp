@@ -1,0 +1,67 @@
+// Kernel, n0, lambda and kappa against brute-force lattice sums and their continuum limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fluid/kernel.hpp"
+
+namespace slide {
+namespace {
+
+TEST(Kernel, SeedFormula) {
+  EXPECT_DOUBLE_EQ(kernel_weight(0.0, 2.0), 1.0);
+  EXPECT_DOUBLE_EQ(kernel_weight(1.0, 2.0), 0.125);
+  EXPECT_DOUBLE_EQ(kernel_weight(2.0, 2.0), 0.0);
+  EXPECT_DOUBLE_EQ(kernel_weight(3.0, 2.0), 0.0);
+  // The derivative agrees with a central difference.
+  for (double r : {0.1, 0.7, 1.3, 1.9}) {
+    const double h = 1e-6;
+    EXPECT_NEAR(kernel_derivative(r, 2.0), (kernel_weight(r + h, 2.0) - kernel_weight(r - h, 2.0)) / (2 * h), 1e-8);
+  }
+}
+
+// Lattice sums written out by hand for re = 2.1 dp in 2-D: neighbours at 1 (4), sqrt 2 (4) and 2 (4) spacings.
+TEST(Kernel, LatticeConstants2DByHand) {
+  const double dp = 0.01, re = 2.1 * dp;
+  const double w1 = std::pow(1 - 1 / 2.1, 3), w2 = std::pow(1 - std::sqrt(2.0) / 2.1, 3), w3 = std::pow(1 - 2 / 2.1, 3);
+  const double n0 = 4 * (w1 + w2 + w3);
+  const double lambda = 4 * (w1 * 1 + w2 * 2 + w3 * 4) * dp * dp / n0;
+  const LatticeConstants c = lattice_constants<2>(dp, re);
+  EXPECT_NEAR(c.n0, n0, 1e-14);
+  EXPECT_NEAR(c.lambda, lambda, 1e-18);
+}
+
+// 3-D, re = 1.5 dp: neighbours at 1 (6) and sqrt 2 (12) spacings.
+TEST(Kernel, LatticeConstants3DByHand) {
+  const double dp = 1.0, re = 1.5;
+  const double w1 = std::pow(1 - 1 / 1.5, 3), w2 = std::pow(1 - std::sqrt(2.0) / 1.5, 3);
+  const LatticeConstants c = lattice_constants<3>(dp, re);
+  EXPECT_NEAR(c.n0, 6 * w1 + 12 * w2, 1e-14);
+  EXPECT_NEAR(c.lambda, (6 * w1 + 12 * w2 * 2) / (6 * w1 + 12 * w2), 1e-14);
+}
+
+// As dp -> 0 with re fixed, n0 dp^d tends to the integral of W and lambda to its continuum value.
+template <int D>
+void expect_continuum_limit() {
+  const double re = 1.0;
+  double previous_error = 1e9;
+  for (double ratio : {4.0, 8.0, 16.0, 32.0}) {
+    const double dp = re / ratio;
+    const LatticeConstants c = lattice_constants<D>(dp, re);
+    // n0 excludes the origin's W(0) = 1; the integral includes the whole support.
+    const double integral = (c.n0 + 1.0) * std::pow(dp, D);
+    const double error = std::abs(integral - kernel_volume_integral<D>(re)) / kernel_volume_integral<D>(re);
+    EXPECT_LT(error, previous_error) << "ratio " << ratio;
+    previous_error = error;
+  }
+  EXPECT_LT(previous_error, 2e-3);
+  const LatticeConstants fine = lattice_constants<D>(re / 32.0, re);
+  EXPECT_NEAR(fine.lambda, continuum_lambda<D>(re), 0.01 * continuum_lambda<D>(re));
+  EXPECT_NEAR(fine.kappa, 1.0, 0.01);
+}
+
+TEST(Kernel, ContinuumLimit2D) { expect_continuum_limit<2>(); }
+TEST(Kernel, ContinuumLimit3D) { expect_continuum_limit<3>(); }
+
+}  // namespace
+}  // namespace slide

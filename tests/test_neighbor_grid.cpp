@@ -1,0 +1,68 @@
+// The cell-list neighbour search against brute force on random points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "fluid/neighbor_grid.hpp"
+
+namespace slide {
+namespace {
+
+template <int D>
+std::vector<Vec<D>> random_points(std::size_t n, double size, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, size);
+  std::vector<Vec<D>> x(n);
+  for (auto& p : x)
+    for (int k = 0; k < D; ++k) p[k] = u(rng);
+  return x;
+}
+
+template <int D>
+void expect_list_matches_brute_force(std::size_t n, double radius) {
+  const auto x = random_points<D>(n, 1.0, 42 + D);
+  NeighborGrid<D> grid(Vec<D>::Zero(), Vec<D>::Ones(), radius);
+  grid.bin(x);
+  NeighborList list;
+  list.capacity = 4;  // deliberately small: the builder must grow it
+  build_neighbor_list(grid, x, radius, list);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::uint32_t> expected, got(list.begin(i), list.end(i));
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i && distance_squared<D>(x[i], x[j]) < radius * radius) expected.push_back(static_cast<std::uint32_t>(j));
+    std::sort(got.begin(), got.end());
+    ASSERT_EQ(got, expected) << "particle " << i;
+  }
+}
+
+TEST(NeighborGrid, MatchesBruteForce2D) { expect_list_matches_brute_force<2>(2000, 0.05); }
+TEST(NeighborGrid, MatchesBruteForce3D) { expect_list_matches_brute_force<3>(2000, 0.12); }
+
+TEST(NeighborGrid, SortedIndicesArePermutationGroupedByCell) {
+  const auto x = random_points<2>(500, 1.0, 7);
+  NeighborGrid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), 0.1);
+  grid.bin(x);
+  auto order = grid.sorted_indices();
+  std::vector<std::size_t> cells;
+  for (auto i : order) cells.push_back(grid.linear(grid.cell_of(x[i])));
+  EXPECT_TRUE(std::is_sorted(cells.begin(), cells.end()));
+  std::sort(order.begin(), order.end());
+  for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], i);
+}
+
+TEST(NeighborGrid, PointQueryMatchesBruteForce) {
+  const auto x = random_points<2>(1000, 1.0, 9);
+  NeighborGrid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), 0.08);
+  grid.bin(x);
+  const Vec<2> q(0.43, 0.61);
+  std::vector<std::uint32_t> got, expected;
+  grid.for_each_near(q, 0.08, x, [&](std::uint32_t j, double) { got.push_back(j); });
+  for (std::size_t j = 0; j < x.size(); ++j)
+    if (distance_squared<2>(x[j], q) < 0.08 * 0.08) expected.push_back(static_cast<std::uint32_t>(j));
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, expected);
+}
+
+}  // namespace
+}  // namespace slide

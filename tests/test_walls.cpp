@@ -1,0 +1,66 @@
+// Boundary particles from wall polylines.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "fluid/walls.hpp"
+
+namespace slide {
+namespace {
+
+TEST(Walls, LayersCoverTheKernel) {
+  EXPECT_EQ(boundary_layers(2.1), 3);
+  EXPECT_EQ(boundary_layers(3.0), 3);
+  EXPECT_EQ(boundary_layers(3.1), 4);
+}
+
+// A U-shaped tank whose sides are multiples of dp continues the fluid's lattice (i + 1/2) dp exactly.
+TEST(Walls, RectangularTankIsALattice) {
+  const double dp = 0.1;
+  const auto pts = polyline_boundary({Vec<2>(0, 1.0), Vec<2>(0, 0), Vec<2>(2.0, 0), Vec<2>(2.0, 1.0)}, true, dp, 3);
+  std::set<std::pair<long, long>> seen;
+  for (const auto& b : pts) {
+    const double i = b.position[0] / dp - 0.5, j = b.position[1] / dp - 0.5;
+    EXPECT_NEAR(i, std::round(i), 1e-9);
+    EXPECT_NEAR(j, std::round(j), 1e-9);
+    EXPECT_TRUE(seen.insert({std::lround(i), std::lround(j)}).second) << "duplicate at " << b.position.transpose();
+    // Depth: layer k lies (k + 1/2) dp behind the face; corners measure to the face's vertex.
+    EXPECT_GT(b.depth, 0.0);
+    // The normal points into the tank.
+    EXPECT_NEAR(b.normal.norm(), 1.0, 1e-12);
+  }
+  // Layer 0 along the bottom at y = -dp/2 spans x = -dp/2 .. 2 + dp/2: 22 points, normal +y.
+  int bottom = 0;
+  for (const auto& b : pts)
+    if (b.layer == 0 && std::abs(b.position[1] + 0.05) < 1e-9) {
+      ++bottom;
+      if (b.position[0] > 0 && b.position[0] < 2.0) EXPECT_NEAR(b.normal[1], 1.0, 1e-12);
+    }
+  EXPECT_EQ(bottom, 22);
+  // Corner particle of layer 1: (-0.15, -0.15), its image through the corner is the fluid site (0.15, 0.15).
+  for (const auto& b : pts)
+    if ((b.position - Vec<2>(-0.15, -0.15)).norm() < 1e-9) {
+      const Vec<2> image = b.position + 2 * b.depth * b.normal;
+      EXPECT_NEAR(image[0], 0.15, 1e-12);
+      EXPECT_NEAR(image[1], 0.15, 1e-12);
+    }
+}
+
+TEST(Walls, ClosedPolygonHasCornersEverywhere) {
+  const double dp = 0.1;
+  const auto pts =
+      polyline_boundary({Vec<2>(0, 0), Vec<2>(1, 0), Vec<2>(1, 1), Vec<2>(0, 1), Vec<2>(0, 0)}, true, dp, 1);
+  // Layer 0 is the square of side 1.1 at -0.05 .. 1.05: 4 * 11 points, no duplicates.
+  EXPECT_EQ(pts.size(), 44u);
+  std::set<std::pair<long, long>> seen;
+  for (const auto& b : pts) EXPECT_TRUE(seen.insert({std::lround(b.position[0] * 100), std::lround(b.position[1] * 100)}).second);
+}
+
+TEST(Walls, RejectsDegenerateInput) {
+  EXPECT_THROW(polyline_boundary({Vec<2>(0, 0)}, true, 0.1, 1), std::invalid_argument);
+  EXPECT_THROW(polyline_boundary({Vec<2>(0, 0), Vec<2>(0, 0)}, true, 0.1, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace slide
