@@ -8,9 +8,13 @@
 
 namespace slide {
 
+// Loops shorter than this run on one thread: starting a parallel region costs more than they do, and threads that
+// spin waiting for work slow everything down when the machine is busy with other jobs.
+inline constexpr long parallel_threshold = 4096;
+
 template <class F>
 void parallel_for(std::size_t n, F&& f) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (static_cast<long>(n) >= parallel_threshold)
   for (long i = 0; i < static_cast<long>(n); ++i) f(static_cast<std::size_t>(i));
 }
 
@@ -18,7 +22,7 @@ void parallel_for(std::size_t n, F&& f) {
 template <class F>
 double parallel_max(std::size_t n, double init, F&& f) {
   double result = init;
-#pragma omp parallel for schedule(static) reduction(max : result)
+#pragma omp parallel for schedule(static) reduction(max : result) if (static_cast<long>(n) >= parallel_threshold)
   for (long i = 0; i < static_cast<long>(n); ++i) {
     const double v = f(static_cast<std::size_t>(i));
     if (v > result) result = v;

@@ -128,12 +128,19 @@ int check_command(const RunArguments& args) {
       "initial dt      {:.6g} s, limited by {}\n"
       "end time        {} s (about {:.0f} steps at the initial dt)\n"
       "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
-      "memory          about {:.1f} MB\n",
+      "memory          about {:.1f} MB\n"
+      "{}",
       scene->name, sim.particles.size(), scene->fluid_count, scene->wall_count, scene->dummy_count, o.dp,
       o.re_over_dp, sim.re(), sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene->sound_speed_source, to_string(o.gradient), dt, time_step_limit_names[static_cast<int>(limit)],
       scene->end_time, scene->end_time / dt, o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1],
-      memory_estimate_mb(sim));
+      memory_estimate_mb(sim),
+      scene->equilibrium
+          ? fmt::format("hydrostatic start: equilibrium column relaxed for {:.4g} s ({} steps), residual row speed "
+                        "{:.3g} m/s\n",
+                        scene->equilibrium->relaxation_time, scene->equilibrium->steps,
+                        scene->equilibrium->residual_speed)
+          : std::string());
   return 0;
 }
 
