@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""Plots a slide run: wave gauges (gauges.png) and, for a dam break, the surge front against Martin & Moyce (1952)
+(surge_front.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid, e.g. resolutions).
+Uses Debian's python3-matplotlib and python3-numpy through /usr/bin/python3."""
+import csv
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REFERENCE = os.path.join(ROOT, "cases", "reference", "martin_moyce_1952_surge_front.csv")
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def label_of(run_dir):
+    try:
+        run = json.load(open(os.path.join(run_dir, "run.json")))
+        dp = run["scene"]["particle_spacing"]
+        return f"{run['case']} dp={dp:g} m ({run['scene']['method']['gradient']})"
+    except (OSError, KeyError, ValueError):
+        return os.path.basename(os.path.normpath(run_dir))
+
+
+def plot_front(runs, target):
+    fig, (ax_z, ax_h) = plt.subplots(1, 2, figsize=(11, 4.2))
+    sources = {}
+    for row in read_csv(REFERENCE):
+        sources.setdefault(row["source_id"], []).append(
+            (float(row["T_dimless_t_sqrt_2g_over_a"]), float(row["Z_dimless_xfront_over_a"])))
+    for marker, (source, points) in zip("osd^", sorted(sources.items())):
+        ax_z.plot(*zip(*points), marker, mfc="none", color="k", ms=5, label=f"Martin & Moyce 1952 ({source})")
+    for run in runs:
+        rows = read_csv(os.path.join(run, "surge_front.csv"))
+        T = [float(r["T"]) for r in rows]
+        ax_z.plot(T, [float(r["Z"]) for r in rows], label=label_of(run))
+        ax_h.plot(T, [float(r["H_over_2a"]) for r in rows], label=label_of(run))
+    ax_z.set(xlabel="T = t sqrt(2g/a)", ylabel="Z = front / a", xlim=(0, 3.5), ylim=(1, 5), title="surge front")
+    ax_h.set(xlabel="T = t sqrt(2g/a)", ylabel="H / 2a", xlim=(0, 3.5), title="water height at the wall")
+    ax_z.legend(fontsize=6)
+    ax_h.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(target, dpi=110)
+    print("wrote", target)
+
+
+def plot_gauges(runs, target):
+    fig, ax = plt.subplots(figsize=(8, 4))
+    for run in runs:
+        rows = read_csv(os.path.join(run, "gauges.csv"))
+        t = [float(r["time"]) for r in rows]
+        for name in [c for c in rows[0].keys() if c != "time"]:
+            ax.plot(t, [float(r[name]) for r in rows], label=f"{name}: {label_of(run)}")
+    ax.set(xlabel="time (s)", ylabel="free-surface elevation (m)", title="wave gauges")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(target, dpi=110)
+    print("wrote", target)
+
+
+def main():
+    runs = sys.argv[1:]
+    if not runs:
+        sys.exit(__doc__)
+    out = runs[0]
+    if all(os.path.exists(os.path.join(r, "surge_front.csv")) for r in runs):
+        plot_front(runs, os.path.join(out, "surge_front.png"))
+    if all(os.path.exists(os.path.join(r, "gauges.csv")) for r in runs):
+        plot_gauges(runs, os.path.join(out, "gauges.png"))
+
+
+if __name__ == "__main__":
+    main()
