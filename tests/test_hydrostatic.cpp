@@ -16,8 +16,7 @@ struct StillTankResult {
 };
 
 StillTankResult run_still_tank() {
-  std::vector<std::string> ov; if (const char* e = std::getenv("SLIDE_TEST_SET")) ov.push_back(e); if (const char* e = std::getenv("SLIDE_TEST_SET2")) ov.push_back(e);
-  auto scene = load_shipped_scene("hydrostatic_2d.yaml", ov);
+  auto scene = load_shipped_scene("hydrostatic_2d.yaml");
   const auto& opt = scene->simulation->options;
   const double dp = opt.dp, g = -opt.gravity[1], rho = 1000.0, level = 0.5;
   // Wall-layer particles of the tank's bottom lie half a spacing below the floor face at y = 0.

@@ -64,7 +64,7 @@ void expect_gradient_of_linear_field_exact() {
   for (int k = 0; k < D; ++k) slope[k] = 1.5 + 2.0 * k;
   for (std::size_t i = 0; i < L.particles.size(); ++i) L.particles.pressure[i] = 300.0 + slope.dot(L.particles.position[i]);
   for (GradientModel m : {GradientModel::standard, GradientModel::pmin, GradientModel::symmetric,
-                          GradientModel::variational}) {
+                          GradientModel::variational, GradientModel::difference}) {
     for (std::size_t i = 0; i < L.particles.size(); ++i) {
       if (!L.interior(i)) continue;
       const Vec<D> g = pressure_gradient<D>(m, i, L.particles, L.list, L.re, L.constants.n0, L.constants.kappa);
