@@ -72,6 +72,10 @@ Schema make_schema() {
                                    {"mirror", "number_density", "extrapolated"}, "mirror")},
        {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
                                           "(fluid/artificial_viscosity.hpp)", "", 0.0, 0.0, 1.0)},
+       {"collision_distance", S::number("collision model (fluid/collision.hpp): fluid particles closer than this "
+                                        "approaching each other or a wall collide inelastically; 0 = off",
+                                        "dp", 0.5, 0.0, 1.0)},
+       {"collision_restitution", S::number("restitution coefficient of the collision model", "", 0.2, 0.0, 1.0)},
        {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; lattice "
                                    "starts from the uncompressed lattice",
                                    {"hydrostatic", "lattice"}, "hydrostatic")},
@@ -220,6 +224,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   opt.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
   opt.wall_slip = m["wall_slip"].as<std::string>() == "no_slip" ? WallSlip::no_slip : WallSlip::free_slip;
   opt.artificial_viscosity = m["artificial_viscosity"].as<double>();
+  opt.collision_distance_over_dp = m["collision_distance"].as<double>();
+  opt.collision_restitution = m["collision_restitution"].as<double>();
   const std::string wall_pressure = m["wall_pressure"].as<std::string>();
   opt.wall_pressure = wall_pressure == "extrapolated"     ? FluidOptions<2>::WallPressure::extrapolated
                       : wall_pressure == "number_density" ? FluidOptions<2>::WallPressure::number_density

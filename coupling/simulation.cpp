@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fluid/artificial_viscosity.hpp"
+#include "fluid/collision.hpp"
 #include "fluid/number_density.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/wall_pressure.hpp"
@@ -146,6 +147,21 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
     if (damping != 1.0) P.velocity[i] *= damping;
     P.acceleration[i] += scratch_[i];
   });
+
+  // Collisions between particles that came too close.
+  if (options.collision_distance_over_dp > 0.0) {
+    const double distance = options.collision_distance_over_dp * options.dp;
+    parallel_for(n, [&](std::size_t i) {
+      scratch_[i] = P.kind[i] == Kind::fluid
+                        ? collision_velocity_change<D>(i, P, list_, distance, options.collision_restitution)
+                        : Vec<D>::Zero();
+    });
+    parallel_for(n, [&](std::size_t i) {
+      if (P.kind[i] != Kind::fluid) return;
+      P.velocity[i] += scratch_[i];
+      P.position[i] += dt * scratch_[i];
+    });
+  }
 
   time += dt;
   ++step_count;

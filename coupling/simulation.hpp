@@ -34,6 +34,8 @@ struct FluidOptions {
   // fluid plus the hydrostatic head (fluid/wall_pressure.hpp).
   enum class WallPressure { number_density, extrapolated, mirror } wall_pressure = WallPressure::mirror;
   double artificial_viscosity = 0.0;  // Monaghan alpha; 0 = off
+  double collision_distance_over_dp = 0.5;  // collision model (fluid/collision.hpp); 0 = off
+  double collision_restitution = 0.2;
   double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while relaxing
   Vec<D> gravity = Vec<D>::Zero();
   // Time step: dt = min(cfl dp / (c0 + |u|max), viscous_number dp^2 / nu_max, force_number sqrt(dp / |a|max), dt_max)
