@@ -92,9 +92,14 @@ std::string limit_summary(const std::array<long, 5>& counts) {
   return s;
 }
 
-std::unique_ptr<cases::Scene> load(const RunArguments& args) {
-  const YAML::Node resolved = cases::load_scene(args.scene, args.overrides);
-  return cases::build_scene(resolved, args.scene.stem().string());
+// Reads, checks and builds the scene; on a scene error prints it and returns null (the caller exits 2).
+std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
+  try {
+    return cases::build_scene(cases::load_scene(args.scene, args.overrides), args.scene.stem().string());
+  } catch (const cases::SceneError& e) {
+    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
+    return nullptr;
+  }
 }
 
 double memory_estimate_mb(const Simulation<2>& sim) {
@@ -108,13 +113,8 @@ double memory_estimate_mb(const Simulation<2>& sim) {
 }  // namespace
 
 int check_command(const RunArguments& args) {
-  std::unique_ptr<cases::Scene> scene;
-  try {
-    scene = load(args);
-  } catch (const cases::SceneError& e) {
-    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
-    return 2;
-  }
+  const std::unique_ptr<cases::Scene> scene = load_or_report(args);
+  if (!scene) return 2;
   const auto& sim = *scene->simulation;
   const auto [dt, limit] = sim.allowed_time_step();
   const auto& o = sim.options;
@@ -151,13 +151,8 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
-  std::unique_ptr<cases::Scene> scene;
-  try {
-    scene = load(args);
-  } catch (const cases::SceneError& e) {
-    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
-    return 2;
-  }
+  const std::unique_ptr<cases::Scene> scene = load_or_report(args);
+  if (!scene) return 2;
   auto& sim = *scene->simulation;
   const std::filesystem::path out = args.out.empty() ? std::filesystem::path("runs") / scene->name : args.out;
   std::filesystem::create_directories(out);
