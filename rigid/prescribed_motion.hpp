@@ -1,0 +1,103 @@
+#pragma once
+// Prescribed planar motion of a body: a time series or a closed-form law. The velocity returned is the exact time
+// derivative of the same position function, so a prescribed body's boundary particles move consistently.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rigid/rigid_world.hpp"
+
+namespace slide::rigid {
+
+struct MotionSample {
+  double time = 0.0;
+  PlanarState state;  // position, angle; velocity and angular velocity used when has_velocity
+};
+
+class PrescribedMotion {
+ public:
+  // Piecewise cubic Hermite through the samples (times strictly increasing). With has_velocity the samples'
+  // velocities are the slopes (a free run's bodies.csv is reproduced in position and velocity at every sample);
+  // otherwise the slopes are centred differences (one-sided at the ends).
+  static PrescribedMotion from_samples(std::vector<MotionSample> samples, bool has_velocity) {
+    if (samples.size() < 2) throw std::invalid_argument("a prescribed motion needs at least two samples");
+    for (std::size_t k = 1; k < samples.size(); ++k)
+      if (!(samples[k].time > samples[k - 1].time))
+        throw std::invalid_argument("prescribed motion times must increase strictly (row " + std::to_string(k + 1) +
+                                    ")");
+    if (!has_velocity) {
+      const std::size_t n = samples.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t a = k == 0 ? 0 : k - 1, b = k + 1 == n ? k : k + 1;
+        const double h = samples[b].time - samples[a].time;
+        samples[k].state.velocity = (samples[b].state.position - samples[a].state.position) / h;
+        samples[k].state.angular_velocity = (samples[b].state.angle - samples[a].state.angle) / h;
+      }
+    }
+    PrescribedMotion m;
+    m.samples_ = std::move(samples);
+    return m;
+  }
+
+  // Sliding along a straight line from rest (Watts 1998; Grilli & Watts 2005, used for the Enet & Grilli slide):
+  //   s(t) = s0 ln cosh(t / t0),  s'(t) = (s0 / t0) tanh(t / t0),
+  // x(t) = start + s(t) direction (unit), angle constant; t measured from `begin` (at rest before it).
+  static PrescribedMotion ln_cosh(const Vec2& start, double angle, const Vec2& direction, double s0, double t0,
+                                  double begin) {
+    if (!(s0 > 0.0 && t0 > 0.0)) throw std::invalid_argument("ln_cosh needs positive s0 and t0");
+    PrescribedMotion m;
+    m.law_ = true;
+    m.start_ = start;
+    m.angle_ = angle;
+    m.direction_ = direction.normalized();
+    m.s0_ = s0;
+    m.t0_ = t0;
+    m.begin_ = begin;
+    return m;
+  }
+
+  double first_time() const { return law_ ? -INFINITY : samples_.front().time; }
+  double last_time() const { return law_ ? INFINITY : samples_.back().time; }
+
+  PlanarState at(double t) const {
+    PlanarState s;
+    if (law_) {
+      const double tau = std::max(0.0, t - begin_) / t0_;
+      s.position = start_ + (s0_ * std::log(std::cosh(tau))) * direction_;
+      s.angle = angle_;
+      s.velocity = (s0_ / t0_ * std::tanh(tau)) * direction_;
+      return s;
+    }
+    if (t < samples_.front().time || t > samples_.back().time)
+      throw std::out_of_range("time " + std::to_string(t) + " s outside the prescribed motion's samples");
+    std::size_t k = std::upper_bound(samples_.begin(), samples_.end(), t,
+                                     [](double v, const MotionSample& m) { return v < m.time; }) -
+                    samples_.begin();
+    k = std::min(std::max<std::size_t>(k, 1), samples_.size() - 1) - 1;
+    const MotionSample &a = samples_[k], &b = samples_[k + 1];
+    const double h = b.time - a.time, u = (t - a.time) / h;
+    // Hermite basis and its derivative with respect to u.
+    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+                 h11 = u * u * (u - 1);
+    const double d00 = 6 * u * u - 6 * u, d10 = 3 * u * u - 4 * u + 1, d01 = -d00, d11 = 3 * u * u - 2 * u;
+    s.position = h00 * a.state.position + (h10 * h) * a.state.velocity + h01 * b.state.position +
+                 (h11 * h) * b.state.velocity;
+    s.velocity = (d00 / h) * a.state.position + d10 * a.state.velocity + (d01 / h) * b.state.position +
+                 d11 * b.state.velocity;
+    s.angle = h00 * a.state.angle + h10 * h * a.state.angular_velocity + h01 * b.state.angle +
+              h11 * h * b.state.angular_velocity;
+    s.angular_velocity = d00 / h * a.state.angle + d10 * a.state.angular_velocity + d01 / h * b.state.angle +
+                         d11 * b.state.angular_velocity;
+    return s;
+  }
+
+ private:
+  std::vector<MotionSample> samples_;
+  bool law_ = false;
+  Vec2 start_ = Vec2::Zero(), direction_ = Vec2::UnitX();
+  double angle_ = 0.0, s0_ = 1.0, t0_ = 1.0, begin_ = 0.0;
+};
+
+}  // namespace slide::rigid

@@ -1,0 +1,73 @@
+#pragma once
+// The rigid-body world: Bullet (double precision) behind one small interface, so that nothing outside rigid/
+// sees Bullet. Bodies are planar: convex polygons extruded one metre in z, constrained to the x-y plane (linear
+// factor 1,1,0; angular factor 0,0,1), so mass and inertia are per unit width. Static ground is made of segments.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "rigid/polygon.hpp"
+
+namespace slide::rigid {
+
+struct PlanarState {
+  Vec2 position = Vec2::Zero();  // centre of mass, m
+  double angle = 0.0;            // rad, counter-clockwise, 0 at creation, continuous (not wrapped)
+  Vec2 velocity = Vec2::Zero();  // of the centre of mass, m/s
+  double angular_velocity = 0.0; // rad/s
+};
+
+struct BodySpec {
+  std::vector<Vec2> outline;  // convex polygon in world coordinates at creation (either orientation)
+  double mass = 0.0;          // per unit width, kg/m
+  double inertia = 0.0;       // about the centre of mass, per unit width, kg m
+  double friction = 0.0;      // Coulomb coefficient against static ground (which has friction 1)
+  double restitution = 0.0;
+  bool kinematic = false;     // moved from outside (prescribed motion): collides but is not pushed
+  std::array<bool, 3> locked{false, false, false};  // x, y, rotation held fixed
+};
+
+class RigidWorld {
+ public:
+  // margin: Bullet's collision margin, m (kept inside the outlines, see polygon.hpp inset).
+  RigidWorld(const Vec2& gravity, double margin);
+  ~RigidWorld();
+  RigidWorld(const RigidWorld&) = delete;
+  RigidWorld& operator=(const RigidWorld&) = delete;
+
+  // Returns the body's index. Its centre of mass is the outline's centroid.
+  int add_body(const BodySpec& spec);
+  // Static ground: the segment a-b with solid material on the side `into_solid` (unit), `thickness` deep.
+  void add_static_segment(const Vec2& a, const Vec2& b, const Vec2& into_solid, double thickness,
+                          double friction, double restitution);
+
+  std::size_t size() const;
+  PlanarState state(int body) const;
+  double mass(int body) const;
+  double inertia(int body) const;
+
+  // Held bodies do not move (release_time); a held body keeps its pose and has zero velocity.
+  void set_held(int body, bool held);
+  // Kinematic bodies: the pose and velocity for the coming step, from a prescribed law.
+  void set_kinematic_state(int body, const PlanarState& s);
+  // Sets a dynamic body's velocity (initial conditions).
+  void set_velocity(int body, const Vec2& velocity, double angular_velocity);
+  // Force through the centre of mass and torque about it, applied during the next step only.
+  void apply_force(int body, const Vec2& force, double torque);
+
+  // Advances exactly dt (no sub-stepping, no interpolation).
+  void step(double dt);
+
+  // What Bullet's contacts and constraints did to the body in the last step, as a mean force:
+  // m (v_new - v_old) / dt - m g - applied force. Zero for kinematic bodies.
+  Vec2 contact_force(int body) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// sizeof(btScalar) as compiled into the library: 8 when the double-precision build is used consistently.
+std::size_t bullet_scalar_size();
+
+}  // namespace slide::rigid
