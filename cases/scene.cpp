@@ -5,11 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <map>
 
 #include "coupling/equilibrium_column.hpp"
+#include "coupling/rigid_bodies.hpp"
 #include "fluid/hydrostatic_start.hpp"
+#include "rigid/polygon.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
@@ -50,6 +54,41 @@ Schema make_schema() {
                                 {"left", "right"}, "left")},
        {"layers", S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel",
                              0L, 0L, 10L)}});
+  auto body = S::map(
+      "a slide or floating body; model rigid makes it a Bullet rigid body whose boundary particles (wall layer + "
+      "dummies inside its outline) exchange forces with the fluid",
+      {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
+       {"model", S::choice("what the body is made of", {"rigid"}, "rigid")},
+       {"shape", S::variant("outline of the body (convex)", "type",
+                            {{"box", S::map("a rectangle", {{"center", S::vector("centre", "m", 2, std::nullopt)},
+                                                            {"size", S::vector("width and height", "m", 2, std::nullopt, 0.0)},
+                                                            {"angle", S::number("rotation, counter-clockwise", "deg", 0.0, -360.0, 360.0)}})},
+                             {"polygon", S::map("a convex polygon", {{"points", point_list("vertices (closed automatically)", 3)}})}})},
+       {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, inf)},
+       {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, inf)},
+       {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
+       {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
+       {"motion", S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
+                            "the law in `prescribed`", {"free", "prescribed"}, "free")},
+       {"locked", S::list("components held fixed (free motion)", S::choice("component", {"x", "y", "rotation"}, std::nullopt))},
+       {"release_time", S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
+       {"prescribed", S::map("prescribed motion (motion: prescribed)",
+                             {{"type", S::choice("series: a CSV time series (time,x,y,angle[,vx,vy,omega] of the centre of mass, as in "
+                                                 "bodies.csv) interpolated by cubic Hermite; ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) "
+                                                 "along `direction`", {"series", "ln_cosh"}, "series")},
+                              {"file", S::text("series: CSV file, relative to the scene file", "")},
+                              {"body", S::text("series: rows whose body column equals this (default: this body's name)", "")},
+                              {"direction", S::vector("ln_cosh: direction of travel", "", 2, std::vector<double>{1.0, -1.0})},
+                              {"s0", S::number("ln_cosh: length scale s0 = u_t^2 / a0", "m", 1.0, 0.0, inf, true)},
+                              {"t0", S::number("ln_cosh: time scale t0 = u_t / a0", "s", 1.0, 0.0, inf, true)},
+                              {"start_time", S::number("ln_cosh: time the motion starts", "s", 0.0, 0.0, inf)}},
+                             false)}});
+  auto rigid = S::map(
+      "rigid-body settings (rigid/: Bullet in double precision)",
+      {{"collision_margin", S::number("Bullet collision margin, kept inside each outline", "dp", 0.1, 0.0, 1.0, true)},
+       {"wall_contact", S::boolean("bodies collide with the walls (the walls have friction 1, so a body's friction is the "
+                                   "Coulomb coefficient of the pair)", true)}},
+      false);
   auto method = S::map(
       "numerical method (weakly compressible MPS, seed eqs. 1-7)",
       {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
@@ -102,7 +141,8 @@ Schema make_schema() {
       {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
        {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, inf)},
        {"gauge_interval", S::number("time between gauge and diagnostic samples", "s", 0.005, 0.0, inf, true,
-                                    false)}},
+                                    false)},
+       {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)}},
       false);
   auto gauge = S::map("a wave gauge: free-surface elevation by a vertical scan of the fluid number density",
                       {{"name", S::text("column name in gauges.csv", std::nullopt)},
@@ -134,6 +174,8 @@ Schema make_schema() {
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase, 1)},
                                       {"regions", S::list("regions filled with fluid", region, 1)}})},
        {"walls", S::list("walls", wall)},
+       {"bodies", S::list("rigid bodies (slides, floating blocks)", body)},
+       {"rigid", rigid},
        {"method", method},
        {"time_step", time_step},
        {"checks", checks},
@@ -179,6 +221,232 @@ double signed_face_distance(const std::vector<FaceSegment>& faces, const Vec<2>&
   return signed_best;
 }
 
+
+struct BodiesBuilt {
+  std::shared_ptr<RigidBodies> bodies;
+  std::vector<std::vector<rigid::Vec2>> outlines;  // counter-clockwise, world coordinates at t = 0
+};
+
+rigid::Vec2 r2(const Vec<2>& v) { return rigid::Vec2(v[0], v[1]); }
+Vec<2> v2(const rigid::Vec2& v) { return Vec<2>(v[0], v[1]); }
+
+// Reads a prescribed-motion series: a CSV with a header naming at least time, x, y, angle (vx, vy, omega and body
+// optional), as bodies.csv has them.
+rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, const std::string& body,
+                                           const std::string& key) {
+  std::ifstream in(file);
+  if (!in) throw SceneError(key, "cannot read " + file.string());
+  std::string line;
+  std::vector<std::string> header;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> out;
+    std::stringstream ss(l);
+    std::string c;
+    while (std::getline(ss, c, ',')) out.push_back(c);
+    return out;
+  };
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') {
+      header = split(line);
+      break;
+    }
+  auto col = [&](const std::string& name) -> int {
+    for (std::size_t k = 0; k < header.size(); ++k)
+      if (header[k] == name) return static_cast<int>(k);
+    return -1;
+  };
+  const int ct = col("time"), cx = col("x"), cy = col("y"), ca = col("angle"), cvx = col("vx"), cvy = col("vy"),
+            cw = col("omega"), cb = col("body");
+  if (ct < 0 || cx < 0 || cy < 0 || ca < 0)
+    throw SceneError(key, file.string() + ": the header must name the columns time, x, y and angle");
+  const bool has_velocity = cvx >= 0 && cvy >= 0 && cw >= 0;
+  std::vector<rigid::MotionSample> samples;
+  long row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty() || line[0] == '#') continue;
+    const auto f = split(line);
+    if (cb >= 0 && (cb >= int(f.size()) || f[cb] != body)) continue;
+    try {
+      rigid::MotionSample m;
+      m.time = std::stod(f.at(ct));
+      m.state.position = rigid::Vec2(std::stod(f.at(cx)), std::stod(f.at(cy)));
+      m.state.angle = std::stod(f.at(ca));
+      if (has_velocity) {
+        m.state.velocity = rigid::Vec2(std::stod(f.at(cvx)), std::stod(f.at(cvy)));
+        m.state.angular_velocity = std::stod(f.at(cw));
+      }
+      // Repeated times (a run's last row written twice) keep the first.
+      if (!samples.empty() && m.time <= samples.back().time) continue;
+      samples.push_back(m);
+    } catch (const std::exception&) {
+      throw SceneError(key, fmt::format("{}: row {} is not numeric", file.string(), row));
+    }
+  }
+  if (samples.size() < 2)
+    throw SceneError(key, fmt::format("{}: fewer than two rows for body \"{}\"", file.string(), body));
+  return rigid::PrescribedMotion::from_samples(std::move(samples), has_velocity);
+}
+
+BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene_dir,
+                         const std::vector<FaceSegment>& faces, const FluidOptions<2>& opt, Particles<2>& P,
+                         std::vector<std::string>& boundary_owner, std::vector<BodyReport>& reports) {
+  BodiesBuilt out;
+  const YAML::Node list = r["bodies"];
+  if (list.size() == 0) return out;
+  const double dp = opt.dp;
+  out.bodies = std::make_shared<RigidBodies>(opt.gravity, r["rigid"]["collision_margin"].as<double>() * dp);
+  if (r["rigid"]["wall_contact"].as<bool>())
+    for (const auto& f : faces)
+      out.bodies->world.add_static_segment(r2(f.a), r2(f.b), r2(-f.inward), 10.0 * dp, 1.0, 1.0);
+  const double end_time = r["end_time"].as<double>();
+  std::map<std::string, std::size_t> names;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const YAML::Node bn = list[k];
+    const std::string path = fmt::format("bodies[{}]", k);
+    const std::string name = bn["name"].as<std::string>();
+    if (names.count(name)) throw SceneError(path + ".name", "duplicate body name \"" + name + "\"");
+    names[name] = k;
+    // Outline.
+    std::vector<rigid::Vec2> outline;
+    const YAML::Node sh = bn["shape"];
+    if (sh["type"].as<std::string>() == "box") {
+      const Vec<2> c = vec2(sh["center"]), size = vec2(sh["size"]);
+      if (!(size[0] > 0 && size[1] > 0)) throw SceneError(path + ".shape.size", "width and height must be positive");
+      const double a = sh["angle"].as<double>() * M_PI / 180.0, ca = std::cos(a), sa = std::sin(a);
+      for (const auto& corner : {Vec<2>(-0.5, -0.5), Vec<2>(0.5, -0.5), Vec<2>(0.5, 0.5), Vec<2>(-0.5, 0.5)}) {
+        const Vec<2> l(corner[0] * size[0], corner[1] * size[1]);
+        outline.push_back(r2(c + Vec<2>(ca * l[0] - sa * l[1], sa * l[0] + ca * l[1])));
+      }
+    } else {
+      for (const auto& p : points_of(sh["points"])) outline.push_back(r2(p));
+    }
+    outline = rigid::counter_clockwise(outline);
+    if (!rigid::is_convex_ccw(outline)) throw SceneError(path + ".shape", "the outline must be a convex polygon");
+    for (const auto& v : outline)
+      if (!faces.empty() && signed_face_distance(faces, v2(v)) < -1e-6 * dp)
+        throw SceneError(path + ".shape", fmt::format("vertex ({:.6g}, {:.6g}) lies behind a wall face", v[0], v[1]));
+    const double area = rigid::signed_area(outline);
+    const double density_key = bn["density"].as<double>(), mass_key = bn["mass"].as<double>();
+    if ((density_key > 0) == (mass_key > 0))
+      throw SceneError(path + ".density", "give exactly one of density and mass (per unit width), both positive");
+    const double mass = mass_key > 0 ? mass_key : density_key * area;
+    const double density = mass / area;
+    rigid::BodySpec spec;
+    spec.outline = outline;
+    spec.mass = mass;
+    spec.inertia = density * rigid::polar_moment_about_centroid(outline);
+    spec.friction = bn["friction"].as<double>();
+    spec.restitution = bn["restitution"].as<double>();
+    for (const auto& l : bn["locked"]) {
+      const std::string c = l.as<std::string>();
+      spec.locked[c == "x" ? 0 : c == "y" ? 1 : 2] = true;
+    }
+    BodyMotion motion;
+    motion.release_time = bn["release_time"].as<double>();
+    const std::string mode = bn["motion"].as<std::string>();
+    if (mode == "prescribed") {
+      motion.mode = BodyMotion::Mode::prescribed;
+      spec.kinematic = true;
+      if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
+      const YAML::Node pr = bn["prescribed"];
+      const rigid::Vec2 c = rigid::centroid(outline);
+      if (pr["type"].as<std::string>() == "series") {
+        const std::string file = pr["file"].as<std::string>();
+        if (file.empty()) throw SceneError(path + ".prescribed.file", "a series needs a CSV file");
+        const std::string who = pr["body"].as<std::string>().empty() ? name : pr["body"].as<std::string>();
+        const auto m = read_motion_series(scene_dir / file, who, path + ".prescribed.file");
+        if (m.first_time() > 1e-9 || m.last_time() < end_time - 1e-9)
+          throw SceneError(path + ".prescribed.file",
+                           fmt::format("the series covers [{:.6g}, {:.6g}] s, which must include [0, end_time = {:.6g}] s",
+                                       m.first_time(), m.last_time(), end_time));
+        const rigid::PlanarState s0 = m.at(0.0);
+        if ((s0.position - c).norm() > 0.01 * dp || std::abs(s0.angle) > 1e-6)
+          throw SceneError(path + ".prescribed.file",
+                           fmt::format("the series starts at ({:.6g}, {:.6g}), angle {:.3g}, but the body's centre of "
+                                       "mass is at ({:.6g}, {:.6g}), angle 0",
+                                       s0.position[0], s0.position[1], s0.angle, c[0], c[1]));
+        motion.prescribed = m;
+      } else {
+        const Vec<2> d = vec2(pr["direction"]);
+        if (d.norm() == 0.0) throw SceneError(path + ".prescribed.direction", "must not be zero");
+        motion.prescribed = rigid::PrescribedMotion::ln_cosh(c, 0.0, r2(d), pr["s0"].as<double>(), pr["t0"].as<double>(),
+                                                             pr["start_time"].as<double>());
+      }
+    } else if (motion.release_time > 0.0 && spec.locked[0] && spec.locked[1] && spec.locked[2]) {
+      // nothing to release, but harmless
+    }
+    const int b = out.bodies->add(name, spec, motion, density);
+    // Boundary particles: the outline as a closed face with the fluid outside, layers inside.
+    std::vector<Vec<2>> face;
+    for (const auto& v : outline) face.push_back(v2(v));
+    face.push_back(face.front());
+    const auto pts = polyline_boundary(face, false, dp, boundary_layers(opt.re_over_dp));
+    const Vec<2> c = v2(rigid::centroid(outline));
+    const std::size_t first = P.size();
+    for (const auto& bp : pts) {
+      bool duplicate = false;
+      for (std::size_t i = first; i < P.size() && !duplicate; ++i)
+        duplicate = distance_squared<2>(P.position[i], bp.position) < 0.25 * dp * dp;
+      if (duplicate || !rigid::contains(outline, r2(bp.position))) continue;
+      const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, 0.0);
+      P.wall_normal[i] = bp.normal;
+      P.wall_depth[i] = bp.depth;
+      P.body[i] = b;
+      P.body_offset[i] = bp.position - c;
+      P.body_normal[i] = bp.normal;
+      boundary_owner.push_back(path);
+    }
+    BodyReport rep;
+    rep.name = name;
+    rep.motion = mode;
+    rep.area = area;
+    rep.mass = mass;
+    rep.inertia = spec.inertia;
+    rep.particles = P.size() - first;
+    reports.push_back(rep);
+    out.outlines.push_back(outline);
+  }
+  return out;
+}
+
+// Part of a convex polygon below a level (Sutherland-Hodgman against one half-plane).
+double area_below(const std::vector<rigid::Vec2>& v, double level) {
+  std::vector<rigid::Vec2> clipped;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const rigid::Vec2 a = v[k], b = v[(k + 1) % v.size()];
+    const bool ain = a[1] <= level, bin = b[1] <= level;
+    if (ain) clipped.push_back(a);
+    if (ain != bin) clipped.push_back(a + (level - a[1]) / (b[1] - a[1]) * (b - a));
+  }
+  return clipped.size() < 3 ? 0.0 : std::abs(rigid::signed_area(clipped));
+}
+
+void finish_body_reports(std::vector<BodyReport>& reports, const BodiesBuilt& built, double dp, double level,
+                         double water_density) {
+  for (std::size_t b = 0; b < reports.size(); ++b) {
+    auto& rep = reports[b];
+    const auto& v = built.outlines[b];
+    const double density = rep.mass / rep.area;
+    const rigid::Vec2 c = rigid::centroid(v);
+    rigid::Vec2 lo = v[0], hi = v[0];
+    for (const auto& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    for (long j = long(std::floor(lo[1] / dp)) - 1; j <= long(std::ceil(hi[1] / dp)) + 1; ++j)
+      for (long i = long(std::floor(lo[0] / dp)) - 1; i <= long(std::ceil(hi[0] / dp)) + 1; ++i) {
+        const rigid::Vec2 p((i + 0.5) * dp, (j + 0.5) * dp);
+        if (!rigid::contains(v, p)) continue;
+        rep.mass_particles += density * dp * dp;
+        rep.inertia_particles += density * dp * dp * (p - c).squaredNorm();
+      }
+    if (std::isfinite(level)) {
+      rep.displaced_area = area_below(v, level);
+      rep.buoyancy_ratio = water_density * rep.displaced_area / rep.mass;
+    } else {
+      rep.buoyancy_ratio = NAN;
+    }
+  }
+}
+
 }  // namespace
 
 const Schema& scene_schema() {
@@ -200,7 +468,8 @@ YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::
   return scene_schema().resolve(raw);
 }
 
-std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name) {
+std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name,
+                                   const std::filesystem::path& scene_dir) {
   auto scene = std::make_unique<Scene>();
   scene->resolved = r;
   scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
@@ -253,7 +522,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
 
   // Walls first (regions of type below_level need their faces).
   std::vector<FaceSegment> faces;
-  std::vector<std::size_t> wall_of_particle;
+  std::vector<std::string> boundary_owner;
   for (std::size_t w = 0; w < r["walls"].size(); ++w) {
     const auto wn = r["walls"][w];
     const auto face = points_of(wn["points"]);
@@ -281,10 +550,20 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
                                   phase_props[0].second);
       P.wall_normal[i] = b.normal;
       P.wall_depth[i] = b.depth;
-      wall_of_particle.push_back(w);
+      boundary_owner.push_back(fmt::format("walls[{}]", w));
     }
   }
+  BodiesBuilt built = build_bodies(r, scene_dir, faces, opt, P, boundary_owner, scene->bodies);
   const std::size_t boundary_count = P.size();
+  // Lattice points of a fluid region must lie outside every body, at least dp/2 from its outline.
+  auto clear_of_bodies = [&](const Vec<2>& p) -> int {
+    for (std::size_t b = 0; b < built.outlines.size(); ++b) {
+      const rigid::Vec2 q(p[0], p[1]);
+      if (rigid::contains(built.outlines[b], q) || rigid::distance_to_outline(built.outlines[b], q) < 0.5 * dp - 1e-9 * dp)
+        return static_cast<int>(b);
+    }
+    return -1;
+  };
 
   // Bounding box of the wall faces, for below_level regions.
   Vec<2> face_lo = Vec<2>::Constant(inf), face_hi = Vec<2>::Constant(-inf);
@@ -294,6 +573,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   }
 
   // Fluid regions.
+  double still_level = -inf;  // highest below_level level, for the bodies' buoyancy report
   std::vector<std::size_t> region_of_particle;
   for (std::size_t k = 0; k < r["fluid"]["regions"].size(); ++k) {
     const auto rn = r["fluid"]["regions"][k];
@@ -327,8 +607,9 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
       lo = face_lo;
       hi = Vec<2>(face_hi[0], std::min(level, face_hi[1]));
       inside = [&, level](const Vec<2>& p) {
-        return p[1] < level && signed_face_distance(faces, p) >= 0.5 * dp - 1e-9 * dp;
+        return p[1] < level && signed_face_distance(faces, p) >= 0.5 * dp - 1e-9 * dp && clear_of_bodies(p) < 0;
       };
+      still_level = std::max(still_level, level);
     }
     std::size_t added = 0;
     const long i0 = static_cast<long>(std::floor(lo[0] / dp)) - 1, i1 = static_cast<long>(std::ceil(hi[0] / dp)) + 1;
@@ -337,6 +618,10 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
       for (long i = i0; i <= i1; ++i) {
         const Vec<2> p((i + 0.5) * dp, (j + 0.5) * dp);
         if (!inside(p)) continue;
+        if (const int b = clear_of_bodies(p); b >= 0)
+          throw SceneError(path, fmt::format("water at ({:.6g}, {:.6g}) lies inside body bodies[{}] or within dp/2 of "
+                                             "its outline",
+                                             p[0], p[1], b));
         P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase_props[ph].first, phase_props[ph].second);
         region_of_particle.push_back(k);
         ++added;
@@ -355,9 +640,9 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
       g.for_each_near(P.position[i], 0.75 * dp, P.position, [&](std::uint32_t j, double r2) {
         if (j == i) return;
         if (j < boundary_count)
-          throw SceneError(path, fmt::format("water overlaps wall walls[{}]: a particle at ({:.6g}, {:.6g}) is {:.3g} dp "
-                                             "from a wall particle (at least 0.75 dp needed)",
-                                             wall_of_particle[j], P.position[i][0], P.position[i][1],
+          throw SceneError(path, fmt::format("water overlaps {}: a particle at ({:.6g}, {:.6g}) is {:.3g} dp "
+                                             "from one of its boundary particles (at least 0.75 dp needed)",
+                                             boundary_owner[j], P.position[i][0], P.position[i][1],
                                              std::sqrt(r2) / dp));
         if (j < i)
           throw SceneError(path, fmt::format("overlaps fluid.regions[{}] at ({:.6g}, {:.6g})",
@@ -387,8 +672,18 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     try {
       const EquilibriumColumn column = equilibrium_column(opt, phase_props[0].first, phase_props[0].second, rows);
       scene->equilibrium = column;
+      std::vector<double> body_shift;
       compress_hydrostatically<2>(P, dp, re, EquationOfState(lc.n0, opt.sound_speed, opt.gamma), g, true,
-                                  column.gap_from_top);
+                                  column.gap_from_top,
+                                  std::isfinite(still_level) ? still_level : std::numeric_limits<double>::quiet_NaN(),
+                                  &body_shift);
+      // Floating bodies go down with the water they rest on (free bodies only: a prescribed one keeps its law).
+      for (std::size_t b = 0; b < body_shift.size(); ++b) {
+        if (body_shift[b] == 0.0 || built.bodies->motion[b].mode != BodyMotion::Mode::free) continue;
+        built.bodies->world.translate(int(b), rigid::Vec2(0.0, body_shift[b]));
+        for (std::size_t i = 0; i < P.size(); ++i)
+          if (P.body[i] == int(b)) P.position[i][1] += body_shift[b];
+      }
     } catch (const std::runtime_error& e) {
       throw SceneError("method.initial_state", std::string("hydrostatic start failed: ") + e.what());
     }
@@ -424,6 +719,11 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   scene->output.snapshot_interval = r["output"]["snapshot_interval"].as<double>();
   scene->output.gauge_interval = r["output"]["gauge_interval"].as<double>();
 
+  finish_body_reports(scene->bodies, built, dp, still_level, phase_props[0].first);
+  if (!built.outlines.empty()) {
+    sim->bodies = std::move(built.bodies);
+    scene->body_sample_interval = r["output"]["body_interval"].as<double>();
+  }
   sim->initialise();
   scene->simulation = std::move(sim);
   return scene;

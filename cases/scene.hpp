@@ -33,6 +33,21 @@ struct OutputSpec {
   double gauge_interval = 0.0;     // s
 };
 
+// What `slide check` reports about a body: mass and inertia from the outline beside the same sums over a dp
+// lattice filling it, and the buoyancy at the still-water level.
+struct BodyReport {
+  std::string name;
+  std::string motion;
+  double area = 0.0;             // m^2 (per unit width)
+  double mass = 0.0;             // kg/m
+  double inertia = 0.0;          // kg m, about the centre of mass
+  double mass_particles = 0.0;   // the same from lattice points inside the outline
+  double inertia_particles = 0.0;
+  double displaced_area = 0.0;   // below the still-water level, m^2
+  double buoyancy_ratio = 0.0;   // rho_water g displaced / (m g); NaN without a still-water level
+  std::size_t particles = 0;     // boundary particles
+};
+
 struct Scene {
   std::string name;
   YAML::Node resolved;  // every key, defaults filled in
@@ -45,6 +60,8 @@ struct Scene {
   std::string sound_speed_source;  // how c0 was chosen
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
+  std::vector<BodyReport> bodies;
+  double body_sample_interval = 0.0;  // s, bodies.csv rows
 };
 
 // The scene format. Its document() is cases/SCHEMA.md.
@@ -55,6 +72,8 @@ YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::
 
 // Builds particles and options from a resolved scene. Throws SceneError for geometric problems (a region that
 // holds no particle, water overlapping a wall).
-std::unique_ptr<Scene> build_scene(const YAML::Node& resolved, const std::string& default_name);
+// scene_dir: where files named by the scene (prescribed motion series) are looked up.
+std::unique_ptr<Scene> build_scene(const YAML::Node& resolved, const std::string& default_name,
+                                   const std::filesystem::path& scene_dir = ".");
 
 }  // namespace slide::cases

@@ -7,6 +7,7 @@
 #include "fluid/collision.hpp"
 #include "fluid/number_density.hpp"
 #include "fluid/parallel.hpp"
+#include "coupling/rigid_bodies.hpp"
 #include "fluid/wall_pressure.hpp"
 
 namespace slide {
@@ -18,6 +19,9 @@ void Simulation<D>::initialise() {
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   grid_ = NeighborGrid<D>(options.domain_lo, options.domain_hi, re() + options.skin_over_dp * dp);
   scratch_.assign(particles.size(), Vec<D>::Zero());
+  if constexpr (D == 2) {
+    if (bodies) bodies->place_particles(particles, time);
+  }
   update_neighbors(true);
   compute_pressure();
 }
@@ -123,6 +127,11 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
                                               options.sound_speed, options.dp);
     P.acceleration[i] = a + options.gravity;
   });
+  const double volume = std::pow(options.dp, D);  // per particle (per unit width in 2-D)
+  if constexpr (D == 2) {
+    if (bodies)
+      bodies->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip, volume);
+  }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += dt * P.acceleration[i];
@@ -140,6 +149,9 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
     scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e,
                                                                lattice.n0, lattice.kappa);
   });
+  if constexpr (D == 2) {
+    if (bodies) bodies->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, volume);
+  }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += dt * scratch_[i];
@@ -156,11 +168,22 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
                         ? collision_velocity_change<D>(i, P, list_, distance, options.collision_restitution)
                         : Vec<D>::Zero();
     });
+    if constexpr (D == 2) {
+      if (bodies) bodies->add_collision_forces(P, list_, distance, options.collision_restitution, volume, dt);
+    }
     parallel_for(n, [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) return;
       P.velocity[i] += scratch_[i];
       P.position[i] += dt * scratch_[i];
     });
+  }
+
+  // Rigid bodies: the fluid's force in, one rigid step of the same dt, boundary particles to the new poses.
+  if constexpr (D == 2) {
+    if (bodies) {
+      bodies->advance(time + dt, dt);
+      bodies->place_particles(P, time + dt);
+    }
   }
 
   time += dt;

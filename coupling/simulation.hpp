@@ -1,9 +1,10 @@
 #pragma once
 // The one step loop (DESIGN.md, "The step loop"): neighbours, explicit viscosity and gravity, number density and
-// pressure at the predicted positions, pressure-gradient correction, stability checks. Rigid bodies will join it
-// between the pressure correction and the checks.
+// pressure at the predicted positions, pressure-gradient correction, collisions, rigid bodies (fluid force in,
+// Bullet step, boundary particles placed from the new poses), stability checks.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@
 #include "fluid/viscosity.hpp"
 
 namespace slide {
+
+class RigidBodies;  // coupling/rigid_bodies.hpp (2-D scenes)
 
 template <int D>
 struct FluidOptions {
@@ -65,6 +68,8 @@ class Simulation {
  public:
   Particles<D> particles;
   FluidOptions<D> options;
+  // Rigid bodies two-way coupled with the fluid; null when the scene has none. 2-D only.
+  std::shared_ptr<RigidBodies> bodies;
 
   double time = 0.0;
   long step_count = 0;

@@ -65,34 +65,45 @@ Vec<D> mps_gradient(std::size_t i, const std::vector<Vec<D>>& x, const Field& ph
 //    and in a still tank that layer slides and stirs the tank within 0.1 s (measured here). A wall can only push
 //    along its normal; the tangential part then carries just the pressure difference, which completes the
 //    gradient along the wall.
+// The smallest pressure among i and its neighbours within re (pmin model).
+template <int D>
+double neighborhood_min_pressure(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re) {
+  const double re2 = re * re;
+  double p_ref = P.pressure[i];
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
+    if (distance_squared<D>(P.position[*q], P.position[i]) < re2) p_ref = std::min(p_ref, P.pressure[*q]);
+  return p_ref;
+}
+
+// One neighbour's term of the W / r^2 models (the sum below times d / n0 is grad p_i); r2 = |r_ij|^2 < re^2.
+template <int D, GradientModel M>
+inline Vec<D> pressure_pair_term(std::size_t i, std::uint32_t j, const Vec<D>& rij, double r2, const Particles<D>& P,
+                                 double re, double p_ref) {
+  const auto& p = P.pressure;
+  const double w = kernel_weight(std::sqrt(r2), re) / r2;
+  if constexpr (M == GradientModel::symmetric) {
+    if (P.kind[j] == Kind::fluid) return ((p[i] + p[j]) * w) * rij;
+    const Vec<D>& n = P.wall_normal[j];
+    const Vec<D> normal_part = rij.dot(n) * n;
+    return ((p[i] + p[j]) * w) * normal_part + ((p[j] - p[i]) * w) * (rij - normal_part);
+  } else {
+    return ((p[j] - p_ref) * w) * rij;
+  }
+}
+
 template <int D, GradientModel M>
 Vec<D> pressure_gradient_of(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0) {
   const auto& x = P.position;
-  const auto& p = P.pressure;
   const double re2 = re * re;
-  double p_ref = p[i];
-  if constexpr (M == GradientModel::pmin) {
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-      if (distance_squared<D>(x[*q], x[i]) < re2) p_ref = std::min(p_ref, p[*q]);
-  }
+  double p_ref = P.pressure[i];
+  if constexpr (M == GradientModel::pmin) p_ref = neighborhood_min_pressure<D>(i, P, nl, re);
   Vec<D> g = Vec<D>::Zero();
   for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
     const std::uint32_t j = *q;
     const Vec<D> rij = x[j] - x[i];
     const double r2 = rij.squaredNorm();
     if (r2 >= re2) continue;
-    const double w = kernel_weight(std::sqrt(r2), re) / r2;
-    if constexpr (M == GradientModel::symmetric) {
-      if (P.kind[j] == Kind::fluid) {
-        g += ((p[i] + p[j]) * w) * rij;
-      } else {
-        const Vec<D>& n = P.wall_normal[j];
-        const Vec<D> normal_part = rij.dot(n) * n;
-        g += ((p[i] + p[j]) * w) * normal_part + ((p[j] - p[i]) * w) * (rij - normal_part);
-      }
-    } else {
-      g += ((p[j] - p_ref) * w) * rij;
-    }
+    g += pressure_pair_term<D, M>(i, j, rij, r2, P, re, p_ref);
   }
   return (D / n0) * g;
 }
@@ -112,10 +123,18 @@ Vec<D> pressure_gradient_of(std::size_t i, const Particles<D>& P, const Neighbor
 //    dp; measured here: a 0.5 m still tank stirs itself within 0.1 s), and pmin carries an effective background of
 //    about rho g 2 dp. The price: pair forces are not antisymmetric, so momentum is conserved only approximately.
 template <int D, bool Symmetric>
+inline Vec<D> derivative_pair_term(std::size_t i, std::uint32_t j, const Vec<D>& rij, double r2, const Particles<D>& P,
+                                   double re) {
+  const auto& p = P.pressure;
+  const double r = std::sqrt(r2);
+  const double dp = Symmetric ? p[i] + p[j] : p[j] - p[i];
+  return (dp * -kernel_derivative(r, re) / r) * rij;
+}
+
+template <int D, bool Symmetric>
 Vec<D> derivative_pressure_gradient(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
                                     double n0, double kappa) {
   const auto& x = P.position;
-  const auto& p = P.pressure;
   const double re2 = re * re;
   Vec<D> g = Vec<D>::Zero();
   for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
@@ -123,11 +142,32 @@ Vec<D> derivative_pressure_gradient(std::size_t i, const Particles<D>& P, const 
     const Vec<D> rij = x[j] - x[i];
     const double r2 = rij.squaredNorm();
     if (r2 >= re2) continue;
-    const double r = std::sqrt(r2);
-    const double dp = Symmetric ? p[i] + p[j] : p[j] - p[i];
-    g += (dp * -kernel_derivative(r, re) / r) * rij;
+    g += derivative_pair_term<D, Symmetric>(i, j, rij, r2, P, re);
   }
   return (1.0 / (kappa * n0)) * g;
+}
+
+// What neighbour j alone contributes to grad p_i under model m (zero beyond re), with the model's scale: the
+// pressure force that j exerts on i is -V_i times this. Used to give a body exactly the opposite of what its
+// boundary particles gave the fluid.
+template <int D>
+Vec<D> pressure_gradient_pair(GradientModel m, std::size_t i, std::uint32_t j, const Particles<D>& P,
+                              const NeighborList& nl, double re, double n0, double kappa) {
+  const Vec<D> rij = P.position[j] - P.position[i];
+  const double r2 = rij.squaredNorm();
+  if (r2 >= re * re) return Vec<D>::Zero();
+  switch (m) {
+    case GradientModel::standard:
+      return (D / n0) * pressure_pair_term<D, GradientModel::standard>(i, j, rij, r2, P, re, P.pressure[i]);
+    case GradientModel::pmin:
+      return (D / n0) * pressure_pair_term<D, GradientModel::pmin>(i, j, rij, r2, P, re,
+                                                                    neighborhood_min_pressure<D>(i, P, nl, re));
+    case GradientModel::symmetric:
+      return (D / n0) * pressure_pair_term<D, GradientModel::symmetric>(i, j, rij, r2, P, re, P.pressure[i]);
+    case GradientModel::variational: return (1.0 / (kappa * n0)) * derivative_pair_term<D, true>(i, j, rij, r2, P, re);
+    case GradientModel::difference: return (1.0 / (kappa * n0)) * derivative_pair_term<D, false>(i, j, rij, r2, P, re);
+  }
+  return Vec<D>::Zero();
 }
 
 template <int D>

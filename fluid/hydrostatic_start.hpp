@@ -9,6 +9,7 @@
 // below it) is compressed the same way, its top is the free surface at half a spacing above the top particle.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -62,9 +63,15 @@ double stretch_for_density_ratio(double dp, double re, double target) {
 // gap_from_top, when not empty, gives the equilibrium gaps by depth index (entry k: below the k-th particle from
 // the top of a run, the last one of a run being its gap to the support), which replace the equation-of-state
 // estimate for runs no deeper than it covers (coupling/equilibrium_column.hpp computes them).
+// capped_surface: the still-water level for runs capped by a body's boundary particles (water under a floating
+// block): their depth counts from that level, not from their own top; NaN for none.
+// Boundary particles of bodies are never shifted: bodies keep the shape they were given.
 template <int D>
 double compress_hydrostatically(Particles<D>& P, double dp, double re, const EquationOfState& eos, double g,
-                                bool apply, const std::vector<double>& gap_from_top) {
+                                bool apply, const std::vector<double>& gap_from_top,
+                                double capped_surface = std::numeric_limits<double>::quiet_NaN(),
+                                std::vector<double>* body_shift = nullptr) {
+  std::vector<double> cap_shift_sum, cap_count;  // per body: the top shifts of the runs it caps
   constexpr int up = D - 1;
   struct Run {
     Vec<D> base;                    // horizontal position (vertical component unused)
@@ -90,7 +97,25 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
       while (end < members.size() &&
              P.position[members[end]][up] - P.position[members[end - 1]][up] < 1.5 * dp)
         ++end;
-      const double surface = P.position[members[end - 1]][up] + 0.5 * dp;
+      double surface = P.position[members[end - 1]][up] + 0.5 * dp;
+      std::size_t top_offset = 0;  // rows of missing water between a cap and the still-water level
+      int cap_body = -1;
+      if (apply && std::isfinite(capped_surface) && capped_surface > surface + 0.5 * dp) {
+        const Vec<D>& top = P.position[members[end - 1]];
+        bool capped = false;
+        for (std::size_t i = 0; i < P.size() && !capped; ++i) {
+          if (P.body[i] < 0) continue;
+          double h2 = 0.0;
+          for (int k = 0; k < up; ++k) h2 += (P.position[i][k] - top[k]) * (P.position[i][k] - top[k]);
+          const double above = P.position[i][up] - top[up];
+          capped = h2 < 0.25 * dp * dp && above > 0.0 && above < 1.5 * dp;
+          if (capped) cap_body = P.body[i];
+        }
+        if (capped) {
+          top_offset = static_cast<std::size_t>(std::lround((capped_surface - surface) / dp));
+          surface = capped_surface;
+        }
+      }
       const double bottom = P.position[members[start]][up] - 0.5 * dp;
       deepest = std::max(deepest, surface - bottom);
       if (apply) {
@@ -103,7 +128,7 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
           const double depth_mid = surface - 0.5 * (y + below_nominal);
           const double rho = P.density[members[m]];
           const double target = eos.number_density_ratio(rho * g * depth_mid, rho);
-          const std::size_t from_top = end - 1 - m;
+          const std::size_t from_top = end - 1 - m + top_offset;
           const double gap = from_top < gap_from_top.size()
                                  ? gap_from_top[from_top] * (y - below_nominal) / dp
                                  : (y - below_nominal) * stretch_for_density_ratio<D>(dp, re, target);
@@ -113,16 +138,29 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
           run.y_nominal.push_back(y);
           run.shift.push_back(below_new - y);
         }
+        if (cap_body >= 0) {
+          if (cap_shift_sum.size() <= std::size_t(cap_body)) cap_shift_sum.resize(cap_body + 1, 0.0), cap_count.resize(cap_body + 1, 0.0);
+          // The body sits on the top particle at the gap the missing water row above it would have.
+          const double cap_gap = top_offset >= 1 && top_offset - 1 < gap_from_top.size() ? gap_from_top[top_offset - 1] : dp;
+          cap_shift_sum[cap_body] += run.shift.back() + (cap_gap - dp);
+          cap_count[cap_body] += 1.0;
+        }
         runs.push_back(std::move(run));
       }
       start = end;
     }
   }
   if (!apply) return deepest;
+  // A body resting on compressed water goes down with it: by the mean top shift of the runs it caps.
+  if (body_shift) {
+    body_shift->assign(cap_count.size(), 0.0);
+    for (std::size_t b = 0; b < cap_count.size(); ++b)
+      if (cap_count[b] > 0) (*body_shift)[b] = cap_shift_sum[b] / cap_count[b];
+  }
   // Boundary particles: the shift of the horizontally nearest run that spans their height (within re
   // horizontally); above a run's top they take its top shift, below its bottom none.
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.kind[i] == Kind::fluid) continue;
+    if (P.kind[i] == Kind::fluid || P.body[i] >= 0) continue;
     const Vec<D>& x = P.position[i];
     double best_h2 = re * re, shift = 0.0;
     for (const Run& run : runs) {

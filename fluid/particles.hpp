@@ -32,6 +32,12 @@ struct Particles {
   // Boundary particles: the weight with which they count in their neighbours' number density (1 unless the wall
   // model mirrors the fluid, fluid/wall_pressure.hpp). Fluid particles hold 1.
   std::vector<double> wall_fill;
+  // Boundary particles of a rigid body: the body's index (-1 for fixed walls and fluid), and the particle's offset
+  // from the body's centre of mass and its normal, both in the body's frame (angle 0). Their world position,
+  // velocity and normal are set from the body's pose every step, never integrated.
+  std::vector<std::int32_t> body;
+  std::vector<Vec<D>> body_offset;
+  std::vector<Vec<D>> body_normal;
 
   std::size_t size() const { return position.size(); }
 
@@ -50,6 +56,9 @@ struct Particles {
     wall_normal.push_back(Vec<D>::Zero());
     wall_depth.push_back(0.0);
     wall_fill.push_back(1.0);
+    body.push_back(-1);
+    body_offset.push_back(Vec<D>::Zero());
+    body_normal.push_back(Vec<D>::Zero());
     return i;
   }
 
@@ -68,6 +77,9 @@ struct Particles {
     permute(wall_normal, order);
     permute(wall_depth, order);
     permute(wall_fill, order);
+    permute(body, order);
+    permute(body_offset, order);
+    permute(body_normal, order);
   }
 
   template <class T>

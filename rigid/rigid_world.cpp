@@ -166,6 +166,16 @@ void RigidWorld::set_kinematic_state(int i, const PlanarState& s) {
   b.kinematic_state = s;
 }
 
+void RigidWorld::translate(int i, const Vec2& delta) {
+  auto& b = impl_->bodies.at(i);
+  btTransform tr = b.rigid->getWorldTransform();
+  tr.setOrigin(tr.getOrigin() + v3(delta));
+  b.rigid->setWorldTransform(tr);
+  b.rigid->setCenterOfMassTransform(tr);
+  b.motion->setWorldTransform(tr);
+  b.kinematic_state.position += delta;
+}
+
 void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_velocity) {
   auto& b = impl_->bodies.at(i);
   b.rigid->setLinearVelocity(v3(velocity));

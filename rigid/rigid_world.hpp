@@ -50,6 +50,8 @@ class RigidWorld {
   void set_held(int body, bool held);
   // Kinematic bodies: the pose and velocity for the coming step, from a prescribed law.
   void set_kinematic_state(int body, const PlanarState& s);
+  // Moves a body by delta without changing anything else (set-up only).
+  void translate(int body, const Vec2& delta);
   // Sets a dynamic body's velocity (initial conditions).
   void set_velocity(int body, const Vec2& velocity, double angular_velocity);
   // Force through the centre of mass and torque about it, applied during the next step only.

@@ -12,7 +12,7 @@ namespace slide::testing {
 
 inline std::unique_ptr<cases::Scene> load_shipped_scene(const std::string& name,
                                                         const std::vector<std::string>& overrides = {}) {
-  return cases::build_scene(cases::load_scene(source_dir() / "cases" / name, overrides), name);
+  return cases::build_scene(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");
 }
 
 // Steps to the scene's end time; returns false (with a test failure) if the run goes unstable.

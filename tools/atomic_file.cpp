@@ -143,6 +143,18 @@ void CsvWriter::add_row(std::span<const double> values) {
   ++rows_;
 }
 
+void CsvWriter::add_labelled_row(double first, std::string_view label, std::span<const double> values) {
+  if (values.size() + 2 != columns_.size()) {
+    throw std::invalid_argument(fmt::format("CsvWriter '{}': row has {} values, expected {}", path_.string(),
+                                            values.size() + 2, columns_.size()));
+  }
+  auto out = std::back_inserter(text_);
+  fmt::format_to(out, "{:.17g},{}", first, label);
+  for (double v : values) fmt::format_to(out, ",{:.17g}", v);
+  text_ += '\n';
+  ++rows_;
+}
+
 void CsvWriter::flush() const { write_file_atomically(path_, text_); }
 
 }  // namespace slide::tools

@@ -38,6 +38,9 @@ class CsvWriter {
     add_row(std::span<const double>(values.begin(), values.size()));
   }
 
+  // Appends a row whose second column is a label (a name) and whose other columns are `values` (time first).
+  void add_labelled_row(double first, std::string_view label, std::span<const double> values);
+
   // Rewrites the file (header + all rows) atomically.
   void flush() const;
 

@@ -10,6 +10,7 @@
 
 #include "cases/scene.hpp"
 #include "coupling/free_surface_gauge.hpp"
+#include "coupling/rigid_bodies.hpp"
 #include "coupling/surge_front.hpp"
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
@@ -95,7 +96,8 @@ std::string limit_summary(const std::array<long, 5>& counts) {
 // Reads, checks and builds the scene; on a scene error prints it and returns null (the caller exits 2).
 std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
   try {
-    return cases::build_scene(cases::load_scene(args.scene, args.overrides), args.scene.stem().string());
+    return cases::build_scene(cases::load_scene(args.scene, args.overrides), args.scene.stem().string(),
+                              args.scene.parent_path().empty() ? "." : args.scene.parent_path());
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
     return nullptr;
@@ -141,6 +143,13 @@ int check_command(const RunArguments& args) {
                         scene->equilibrium->relaxation_time, scene->equilibrium->steps,
                         scene->equilibrium->residual_speed)
           : std::string());
+  for (const auto& b : scene->bodies)
+    std::cout << fmt::format(
+        "body {:<10} {} motion, {} boundary particles\n"
+        "  mass            {:.6g} kg/m (lattice sum {:.6g}), inertia {:.6g} kg m (lattice sum {:.6g})\n"
+        "  area            {:.6g} m^2, displaced below the still-water level {:.6g} m^2, buoyancy / weight {:.4g}\n",
+        b.name, b.motion, b.particles, b.mass, b.mass_particles, b.inertia, b.inertia_particles, b.area,
+        b.displaced_area, b.buoyancy_ratio);
   return 0;
 }
 
@@ -159,7 +168,26 @@ int run_command(const RunArguments& args) {
 
   std::optional<SnapshotWriter> snapshots;
   if (scene->output.snapshots) snapshots.emplace(out);
-  std::optional<CsvWriter> gauges, front;
+  std::optional<CsvWriter> gauges, front, bodies_csv;
+  const std::shared_ptr<RigidBodies> bodies = sim.bodies;
+  if (bodies)
+    bodies_csv.emplace(out / "bodies.csv",
+                       std::vector<std::string>{"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
+                                                "torque", "fx_pressure", "fy_pressure", "torque_pressure",
+                                                "fx_viscous", "fy_viscous", "torque_viscous", "fx_contact",
+                                                "fy_contact"});
+  auto sample_bodies = [&]() {
+    if (!bodies) return;
+    for (std::size_t b = 0; b < bodies->size(); ++b) {
+      const auto s = bodies->state(int(b));
+      const auto& f = bodies->force[b];
+      const auto c = bodies->world.contact_force(int(b));
+      const double row[] = {s.position[0], s.position[1], s.angle, s.velocity[0], s.velocity[1],
+                            s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
+                            f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
+      bodies_csv->add_labelled_row(sim.time, bodies->names[b], row);
+    }
+  };
   if (!scene->gauges.empty()) {
     std::vector<std::string> cols{"time"};
     for (const auto& g : scene->gauges) cols.push_back(g.name);
@@ -188,6 +216,7 @@ int run_command(const RunArguments& args) {
     }
   };
   auto flush_csv = [&]() {
+    if (bodies_csv) bodies_csv->flush();
     if (gauges) gauges->flush();
     if (front) front->flush();
   };
@@ -234,6 +263,7 @@ int run_command(const RunArguments& args) {
     // Initial state.
     write_snapshot(sim.particles, sim.time, sim.step_count);
     sample();
+    sample_bodies();
     flush_csv();
     write_run_json("running", "", json::object());
 
@@ -246,6 +276,7 @@ int run_command(const RunArguments& args) {
     const double snapshot_interval = scene->output.snapshot_interval;
     double next_snapshot = snapshot_interval > 0 ? snapshot_interval : std::numeric_limits<double>::infinity();
     double next_sample = scene->output.gauge_interval;
+    double next_body_sample = scene->body_sample_interval;
     auto next_progress = Clock::now() + std::chrono::seconds(1);
     const double end = scene->end_time;
     const double eps = 1e-12 * std::max(1.0, end);
@@ -297,6 +328,11 @@ int run_command(const RunArguments& args) {
         next_sample += scene->output.gauge_interval;
         if (sim.time >= next_sample) next_sample = sim.time + scene->output.gauge_interval;
       }
+      if (bodies && sim.time >= next_body_sample - eps) {
+        sample_bodies();
+        next_body_sample += scene->body_sample_interval;
+        if (sim.time >= next_body_sample) next_body_sample = sim.time + scene->body_sample_interval;
+      }
       if (sim.time >= next_snapshot - eps) {
         write_snapshot(sim.particles, sim.time, sim.step_count);
         flush_csv();
@@ -317,6 +353,7 @@ int run_command(const RunArguments& args) {
     if (snapshots && (snapshots->count() == 0 || snapshot_interval <= 0 || sim.time > next_snapshot - snapshot_interval + eps))
       write_snapshot(sim.particles, sim.time, sim.step_count);
     sample();
+    if (bodies && sim.time > next_body_sample - scene->body_sample_interval + eps) sample_bodies();
     flush_csv();
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     const std::string msg = fmt::format(

@@ -1,0 +1,138 @@
+#include "coupling/rigid_bodies.hpp"
+
+#include <cmath>
+
+#include "fluid/collision.hpp"
+#include "fluid/parallel.hpp"
+
+namespace slide {
+
+namespace {
+double cross2(const Vec<2>& a, const Vec<2>& b) { return a[0] * b[1] - a[1] * b[0]; }
+Vec<2> rotate(const Vec<2>& v, double c, double s) { return Vec<2>(c * v[0] - s * v[1], s * v[0] + c * v[1]); }
+}  // namespace
+
+int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density) {
+  const int b = world.add_body(spec);
+  names.push_back(name);
+  motion.push_back(m);
+  force.emplace_back();
+  pending_.emplace_back();
+  density.push_back(body_density);
+  if (m.mode == BodyMotion::Mode::free && m.release_time > 0.0) world.set_held(b, true);
+  return b;
+}
+
+void RigidBodies::place_particles(Particles<2>& P, double time) {
+  for (std::size_t b = 0; b < size(); ++b)
+    if (motion[b].mode == BodyMotion::Mode::prescribed) world.set_kinematic_state(int(b), motion[b].prescribed->at(time));
+  std::vector<rigid::PlanarState> s(size());
+  std::vector<double> c(size()), sn(size());
+  for (std::size_t b = 0; b < size(); ++b) {
+    s[b] = world.state(int(b));
+    c[b] = std::cos(s[b].angle);
+    sn[b] = std::sin(s[b].angle);
+  }
+  parallel_for(P.size(), [&](std::size_t i) {
+    const int b = P.body[i];
+    if (b < 0) return;
+    const Vec<2> r = rotate(P.body_offset[i], c[b], sn[b]);
+    const auto& st = s[b];
+    P.position[i] = Vec<2>(st.position[0], st.position[1]) + r;
+    // v = V + omega x r, in 2-D omega x r = omega (-r_y, r_x).
+    P.velocity[i] = Vec<2>(st.velocity[0], st.velocity[1]) + st.angular_velocity * Vec<2>(-r[1], r[0]);
+    P.wall_normal[i] = rotate(P.body_normal[i], c[b], sn[b]);
+  });
+}
+
+// Sums per-particle forces into their bodies in index order (deterministic for any thread count), with torques
+// about each body's centre of mass.
+void RigidBodies::accumulate(const Particles<2>& P, const std::vector<Vec<2>>& f, bool viscous) {
+  std::vector<rigid::Vec2> centre(size());
+  for (std::size_t b = 0; b < size(); ++b) centre[b] = world.state(int(b)).position;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const int b = P.body[i];
+    if (b < 0) continue;
+    const Vec<2> arm = P.position[i] - Vec<2>(centre[b][0], centre[b][1]);
+    auto& acc = pending_[b];
+    if (viscous) {
+      acc.viscous += f[i];
+      acc.viscous_torque += cross2(arm, f[i]);
+    } else {
+      acc.pressure += f[i];
+      acc.pressure_torque += cross2(arm, f[i]);
+    }
+  }
+}
+
+// Viscous force of fluid i on ... of body particle j on fluid i: m_i * scale_i * term_ij; the body gets minus it.
+void RigidBodies::add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0,
+                                     double lambda, WallSlip slip, double volume) {
+  scratch_.assign(P.size(), Vec<2>::Zero());
+  const double re2 = re * re;
+  parallel_for(P.size(), [&](std::size_t j) {
+    if (P.body[j] < 0) return;
+    Vec<2> f = Vec<2>::Zero();
+    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q) {
+      const std::uint32_t i = *q;
+      if (P.kind[i] != Kind::fluid) continue;
+      const double r2 = distance_squared<2>(P.position[j], P.position[i]);
+      if (r2 >= re2) continue;
+      const double mass = P.density[i] * volume;
+      f -= (mass * viscous_scale<2>(i, P, n0, lambda)) * viscous_pair_term<2>(i, j, r2, P, re, slip);
+    }
+    scratch_[j] = f;
+  });
+  accumulate(P, scratch_, true);
+}
+
+// Pressure force of body particle j on fluid i: -V_i grad_pair p_i (V_i = m_i / rho_i); the body gets plus it.
+void RigidBodies::add_pressure_forces(const Particles<2>& P, const NeighborList& nl, GradientModel model, double re,
+                                      double n0, double kappa, double volume) {
+  scratch_.assign(P.size(), Vec<2>::Zero());
+  parallel_for(P.size(), [&](std::size_t j) {
+    if (P.body[j] < 0) return;
+    Vec<2> f = Vec<2>::Zero();
+    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q) {
+      const std::uint32_t i = *q;
+      if (P.kind[i] != Kind::fluid) continue;
+      const double mass = P.density[i] * volume;
+      f += (mass / P.density[i]) * pressure_gradient_pair<2>(model, i, j, P, nl, re, n0, kappa);
+    }
+    scratch_[j] = f;
+  });
+  accumulate(P, scratch_, false);
+}
+
+// Collision of fluid i with body particle j changes u_i by du_ij: the body receives the impulse -m_i du_ij.
+void RigidBodies::add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance,
+                                       double restitution, double volume, double dt) {
+  scratch_.assign(P.size(), Vec<2>::Zero());
+  parallel_for(P.size(), [&](std::size_t j) {
+    if (P.body[j] < 0) return;
+    Vec<2> f = Vec<2>::Zero();
+    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q) {
+      const std::uint32_t i = *q;
+      if (P.kind[i] != Kind::fluid) continue;
+      const double mass = P.density[i] * volume;
+      f -= (mass / dt) * collision_pair_change<2>(i, j, P, distance, restitution);
+    }
+    scratch_[j] = f;
+  });
+  accumulate(P, scratch_, false);
+}
+
+void RigidBodies::advance(double time_after, double dt) {
+  for (std::size_t b = 0; b < size(); ++b) {
+    const auto& f = pending_[b];
+    if (motion[b].mode == BodyMotion::Mode::free) {
+      if (time_after > motion[b].release_time) world.set_held(int(b), false);
+      world.apply_force(int(b), rigid::Vec2(f.total()[0], f.total()[1]), f.total_torque());
+    }
+    force[b] = f;
+    pending_[b] = BodyFluidForce{};
+  }
+  world.step(dt);
+}
+
+}  // namespace slide

@@ -1,0 +1,76 @@
+#pragma once
+// The exchange between the MPS fluid and rigid bodies (DESIGN.md step 5). Each body's boundary particles carry
+// their offsets in the body frame; every step their world positions, velocities and normals are set from the
+// body's pose (x = X + R r0, v = V + omega x (R r0)), never integrated. The fluid force on a body is the sum, over
+// its boundary particles, of exactly the opposite of the pair terms those particles contributed to their fluid
+// neighbours' pressure gradient, viscous term and collisions, so what the body gets the fluid gives.
+// Only coupling/ knows both fluid/ and rigid/. Bodies are planar (2-D scenes).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fluid/gradient.hpp"
+#include "fluid/neighbor_grid.hpp"
+#include "fluid/particles.hpp"
+#include "fluid/viscosity.hpp"
+#include "rigid/prescribed_motion.hpp"
+#include "rigid/rigid_world.hpp"
+
+namespace slide {
+
+// Mean fluid force of the last step on a body, and its torque about the centre of mass.
+struct BodyFluidForce {
+  Vec<2> pressure = Vec<2>::Zero();  // pressure gradient and collision impulses
+  Vec<2> viscous = Vec<2>::Zero();
+  double pressure_torque = 0.0;
+  double viscous_torque = 0.0;
+  Vec<2> total() const { return pressure + viscous; }
+  double total_torque() const { return pressure_torque + viscous_torque; }
+};
+
+struct BodyMotion {
+  enum class Mode { free, prescribed } mode = Mode::free;
+  double release_time = 0.0;                        // free bodies are held until then
+  std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed
+};
+
+class RigidBodies {
+ public:
+  RigidBodies(const Vec<2>& gravity, double margin) : world(rigid::Vec2(gravity[0], gravity[1]), margin) {}
+
+  rigid::RigidWorld world;
+  std::vector<std::string> names;
+  std::vector<BodyMotion> motion;
+  std::vector<BodyFluidForce> force;  // of the last step
+  std::vector<double> density;        // kg/m^3 (informative; mass is per unit width)
+
+  int add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density);
+  std::size_t size() const { return names.size(); }
+
+  // Pose and velocity of body b now.
+  rigid::PlanarState state(int b) const { return world.state(b); }
+
+  // Applies the poses at `time` (prescribed bodies) and sets every body particle's position, velocity and
+  // normal from its body's pose.
+  void place_particles(Particles<2>& P, double time);
+
+  // The three exchanges, each called where the fluid computes the same pair terms, before the fluid's update.
+  void add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0, double lambda,
+                          WallSlip slip, double volume);
+  void add_pressure_forces(const Particles<2>& P, const NeighborList& nl, GradientModel model, double re, double n0,
+                           double kappa, double volume);
+  void add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance, double restitution,
+                            double volume, double dt);
+
+  // Hands the accumulated forces to the rigid world, steps it by dt (time is the time after the step), and starts
+  // the next step's accumulation.
+  void advance(double time_after, double dt);
+
+ private:
+  void accumulate(const Particles<2>& P, const std::vector<Vec<2>>& per_particle, bool viscous);
+  BodyFluidForce& pending(int b) { return pending_[b]; }
+  std::vector<BodyFluidForce> pending_;
+  std::vector<Vec<2>> scratch_;
+};
+
+}  // namespace slide
