@@ -181,6 +181,13 @@ Schema make_schema() {
        {"checks", checks},
        {"output", output},
        {"gauges", S::list("wave gauges", gauge)},
+       {"profiles", S::map("free-surface profiles (profiles.csv: time,x,eta), each taken at the first step at or after "
+                           "its time, by the gauges' vertical scan",
+                           {{"times", S::vector("times of the profiles", "s", -1, std::vector<double>{}, 0.0)},
+                            {"x_min", S::number("first x", "m", 0.0)},
+                            {"x_max", S::number("last x", "m", 0.0)},
+                            {"spacing", S::number("distance between points; 0 = dp", "m", 0.0, 0.0, inf)}},
+                           false)},
        {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge}}, false)}});
 }
 
@@ -715,6 +722,17 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   const auto sf = r["diagnostics"]["surge_front"];
   scene->surge_front = {sf["enabled"].as<bool>(), sf["wall_face_x"].as<double>(), sf["floor_y"].as<double>(),
                         sf["column_width"].as<double>()};
+  if (r["profiles"]) {
+    const auto pn = r["profiles"];
+    for (const auto& t : pn["times"]) scene->profiles.times.push_back(t.as<double>());
+    if (!std::is_sorted(scene->profiles.times.begin(), scene->profiles.times.end()))
+      throw SceneError("profiles.times", "must be in increasing order");
+    scene->profiles.x_min = pn["x_min"].as<double>();
+    scene->profiles.x_max = pn["x_max"].as<double>();
+    if (!scene->profiles.times.empty() && !(scene->profiles.x_max > scene->profiles.x_min))
+      throw SceneError("profiles.x_max", "must exceed profiles.x_min");
+    scene->profiles.spacing = pn["spacing"].as<double>() > 0 ? pn["spacing"].as<double>() : dp;
+  }
   scene->output.snapshots = r["output"]["snapshots"].as<bool>();
   scene->output.snapshot_interval = r["output"]["snapshot_interval"].as<double>();
   scene->output.gauge_interval = r["output"]["gauge_interval"].as<double>();

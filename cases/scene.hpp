@@ -27,6 +27,11 @@ struct SurgeFrontSpec {
   double column_width = 0.0;  // a, for the dimensionless columns
 };
 
+struct ProfileSpec {
+  std::vector<double> times;  // s, increasing
+  double x_min = 0.0, x_max = 0.0, spacing = 0.0;
+};
+
 struct OutputSpec {
   bool snapshots = true;
   double snapshot_interval = 0.0;  // s; 0 = first and last only
@@ -55,6 +60,7 @@ struct Scene {
   std::unique_ptr<Simulation<2>> simulation;
   std::vector<GaugeSpec> gauges;
   SurgeFrontSpec surge_front;
+  ProfileSpec profiles;
   OutputSpec output;
   double deepest_water = 0.0;      // m, nominal
   std::string sound_speed_source;  // how c0 was chosen

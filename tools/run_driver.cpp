@@ -215,7 +215,22 @@ int run_command(const RunArguments& args) {
                       a > 0 ? f.wall_height / (2 * a) : NAN});
     }
   };
+  std::optional<CsvWriter> profiles;
+  std::size_t next_profile = 0;
+  if (!scene->profiles.times.empty()) profiles.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
+  auto sample_profiles = [&]() {
+    const auto& ps = scene->profiles;
+    while (profiles && next_profile < ps.times.size() && sim.time >= ps.times[next_profile] - 1e-12) {
+      const long n = std::lround((ps.x_max - ps.x_min) / ps.spacing);
+      for (long k = 0; k <= n; ++k) {
+        const double x = ps.x_min + (ps.x_max - ps.x_min) * k / std::max(1L, n);
+        profiles->add_row({sim.time, x, free_surface_elevation<2>(sim, Vec<2>(x, 0.0))});
+      }
+      ++next_profile;
+    }
+  };
   auto flush_csv = [&]() {
+    if (profiles) profiles->flush();
     if (bodies_csv) bodies_csv->flush();
     if (gauges) gauges->flush();
     if (front) front->flush();
@@ -264,6 +279,7 @@ int run_command(const RunArguments& args) {
     write_snapshot(sim.particles, sim.time, sim.step_count);
     sample();
     sample_bodies();
+    sample_profiles();
     flush_csv();
     write_run_json("running", "", json::object());
 
@@ -328,6 +344,7 @@ int run_command(const RunArguments& args) {
         next_sample += scene->output.gauge_interval;
         if (sim.time >= next_sample) next_sample = sim.time + scene->output.gauge_interval;
       }
+      sample_profiles();
       if (bodies && sim.time >= next_body_sample - eps) {
         sample_bodies();
         next_body_sample += scene->body_sample_interval;
