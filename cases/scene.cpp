@@ -11,6 +11,7 @@
 #include <map>
 
 #include "coupling/equilibrium_column.hpp"
+#include "coupling/relaxation.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/hydrostatic_start.hpp"
 #include "rigid/polygon.hpp"
@@ -115,9 +116,14 @@ Schema make_schema() {
                                         "approaching each other or a wall collide inelastically; 0 = off",
                                         "dp", 0.5, 0.0, 1.0)},
        {"collision_restitution", S::number("restitution coefficient of the collision model", "", 0.2, 0.0, 1.0)},
-       {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; lattice "
-                                   "starts from the uncompressed lattice",
-                                   {"hydrostatic", "lattice"}, "hydrostatic")},
+       {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; settled "
+                                   "does that and then lets water at rest settle with damping for settling_time "
+                                   "(coupling/relaxation.hpp), for scenes whose water starts at rest; lattice starts "
+                                   "from the uncompressed lattice",
+                                   {"hydrostatic", "settled", "lattice"}, "hydrostatic")},
+       {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
+       {"settling_damping", S::number("settled start: velocity damping rate while settling", "1/s", 50.0, 0.0, inf,
+                                      true)},
        {"neighbor_skin", S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it",
                                    "dp", 0.3, 0.0, 1.0)}},
       false);
@@ -673,7 +679,10 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     scene->sound_speed_source =
         fmt::format("default 10 sqrt(g H), H = {:.6g} m (deepest water), g = {:.6g} m/s^2", scene->deepest_water, g);
   }
-  if (m["initial_state"].as<std::string>() == "hydrostatic" && g > 0.0) {
+  const std::string initial_state = m["initial_state"].as<std::string>();
+  if (initial_state == "settled" && !(g > 0.0))
+    throw SceneError("method.initial_state", "a settled start needs downward gravity");
+  if (initial_state != "lattice" && g > 0.0) {
     const LatticeConstants lc = lattice_constants<2>(dp, re);
     const int rows = static_cast<int>(std::lround(scene->deepest_water / dp));
     try {
@@ -743,6 +752,13 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     scene->body_sample_interval = r["output"]["body_interval"].as<double>();
   }
   sim->initialise();
+  if (initial_state == "settled") {
+    try {
+      scene->settling = relax_at_rest(*sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>());
+    } catch (const std::runtime_error& e) {
+      throw SceneError("method.initial_state", e.what());
+    }
+  }
   scene->simulation = std::move(sim);
   return scene;
 }

@@ -10,6 +10,7 @@
 
 #include "cases/schema.hpp"
 #include "coupling/equilibrium_column.hpp"
+#include "coupling/relaxation.hpp"
 #include "coupling/simulation.hpp"
 
 namespace slide::cases {
@@ -67,6 +68,7 @@ struct Scene {
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
   std::vector<BodyReport> bodies;
+  std::optional<Relaxation> settling;  // the settled start, when used
   double body_sample_interval = 0.0;  // s, bodies.csv rows
 };
 

@@ -18,6 +18,7 @@ int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const
   motion.push_back(m);
   force.emplace_back();
   pending_.emplace_back();
+  impulse_.emplace_back();
   density.push_back(body_density);
   if (m.mode == BodyMotion::Mode::free && m.release_time > 0.0) world.set_held(b, true);
   return b;
@@ -133,6 +134,35 @@ void RigidBodies::advance(double time_after, double dt) {
     pending_[b] = BodyFluidForce{};
   }
   world.step(dt);
+  for (std::size_t b = 0; b < size(); ++b) {
+    auto& m = impulse_[b];
+    const auto& f = force[b];
+    m.fluid.pressure += dt * f.pressure;
+    m.fluid.viscous += dt * f.viscous;
+    m.fluid.pressure_torque += dt * f.pressure_torque;
+    m.fluid.viscous_torque += dt * f.viscous_torque;
+    const auto c = world.contact_force(int(b));
+    m.contact += dt * Vec<2>(c[0], c[1]);
+  }
+  impulse_time_ += dt;
+}
+
+std::vector<RigidBodies::MeanForces> RigidBodies::take_mean_forces() {
+  std::vector<MeanForces> out(size());
+  if (impulse_time_ > 0.0) {
+    const double inv = 1.0 / impulse_time_;
+    for (std::size_t b = 0; b < size(); ++b) {
+      const auto& m = impulse_[b];
+      out[b].fluid.pressure = inv * m.fluid.pressure;
+      out[b].fluid.viscous = inv * m.fluid.viscous;
+      out[b].fluid.pressure_torque = inv * m.fluid.pressure_torque;
+      out[b].fluid.viscous_torque = inv * m.fluid.viscous_torque;
+      out[b].contact = inv * m.contact;
+    }
+  }
+  impulse_.assign(size(), MeanForces{});
+  impulse_time_ = 0.0;
+  return out;
 }
 
 }  // namespace slide

@@ -62,6 +62,14 @@ class RigidBodies {
   void add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance, double restitution,
                             double volume, double dt);
 
+  // Mean fluid and contact forces since the last call (time-weighted over the steps in between), for outputs:
+  // a single step's force is noisy, the momentum a body received over an interval is not.
+  struct MeanForces {
+    BodyFluidForce fluid;
+    Vec<2> contact = Vec<2>::Zero();
+  };
+  std::vector<MeanForces> take_mean_forces();
+
   // Hands the accumulated forces to the rigid world, steps it by dt (time is the time after the step), and starts
   // the next step's accumulation.
   void advance(double time_after, double dt);
@@ -70,6 +78,8 @@ class RigidBodies {
   void accumulate(const Particles<2>& P, const std::vector<Vec<2>>& per_particle, bool viscous);
   BodyFluidForce& pending(int b) { return pending_[b]; }
   std::vector<BodyFluidForce> pending_;
+  std::vector<MeanForces> impulse_;  // force x time since the last take_mean_forces
+  double impulse_time_ = 0.0;
   std::vector<Vec<2>> scratch_;
 };
 

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
-"""Plots a slide run: wave gauges (gauges.png) and, for a dam break, the surge front against Martin & Moyce (1952)
-(surge_front.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid, e.g. resolutions).
+"""Plots a slide run: wave gauges (gauges.png); for a dam break the surge front against Martin & Moyce (1952)
+(surge_front.png); for runs with bodies their position, velocity and fluid force against time (bodies.png); and
+free-surface profiles (profiles.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid,
+e.g. resolutions, or a free and a prescribed run).
 Uses Debian's python3-matplotlib and python3-numpy through /usr/bin/python3."""
 import csv
 import json
@@ -66,6 +68,48 @@ def plot_gauges(runs, target):
     print("wrote", target)
 
 
+def plot_bodies(runs, target):
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7))
+    for run in runs:
+        rows = read_csv(os.path.join(run, "bodies.csv"))
+        for body in sorted({r["body"] for r in rows}):
+            mine = [r for r in rows if r["body"] == body]
+            t = [float(r["time"]) for r in mine]
+            x0, y0 = float(mine[0]["x"]), float(mine[0]["y"])
+            dist = [((float(r["x"]) - x0) ** 2 + (float(r["y"]) - y0) ** 2) ** 0.5 for r in mine]
+            speed = [(float(r["vx"]) ** 2 + float(r["vy"]) ** 2) ** 0.5 for r in mine]
+            label = f"{body}: {label_of(run)}"
+            axes[0][0].plot(t, dist, label=label)
+            axes[0][1].plot(t, speed, label=label)
+            axes[1][0].plot(t, [float(r["fx"]) for r in mine], label=f"fx {label}")
+            axes[1][0].plot(t, [float(r["fy"]) for r in mine], "--", label=f"fy {label}")
+            axes[1][1].plot(t, [float(r["angle"]) for r in mine], label=label)
+    axes[0][0].set(xlabel="time (s)", ylabel="distance travelled by the centre of mass (m)", title="position")
+    axes[0][1].set(xlabel="time (s)", ylabel="speed (m/s)", title="velocity")
+    axes[1][0].set(xlabel="time (s)", ylabel="fluid force (N/m)", title="fluid force (pressure + viscous)")
+    axes[1][1].set(xlabel="time (s)", ylabel="angle (rad)", title="rotation")
+    for ax in axes.flat:
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(target, dpi=110)
+    print("wrote", target)
+
+
+def plot_profiles(runs, target):
+    fig, ax = plt.subplots(figsize=(10, 4))
+    for run in runs:
+        rows = read_csv(os.path.join(run, "profiles.csv"))
+        for time in sorted({r["time"] for r in rows}, key=float):
+            mine = [r for r in rows if r["time"] == time]
+            ax.plot([float(r["x"]) for r in mine], [float(r["eta"]) for r in mine],
+                    label=f"t = {float(time):.3f} s: {label_of(run)}")
+    ax.set(xlabel="x (m)", ylabel="free-surface elevation (m)", title="free-surface profiles")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(target, dpi=110)
+    print("wrote", target)
+
+
 def main():
     runs = sys.argv[1:]
     if not runs:
@@ -75,6 +119,10 @@ def main():
         plot_front(runs, os.path.join(out, "surge_front.png"))
     if all(os.path.exists(os.path.join(r, "gauges.csv")) for r in runs):
         plot_gauges(runs, os.path.join(out, "gauges.png"))
+    if all(os.path.exists(os.path.join(r, "bodies.csv")) for r in runs):
+        plot_bodies(runs, os.path.join(out, "bodies.png"))
+    if all(os.path.exists(os.path.join(r, "profiles.csv")) for r in runs):
+        plot_profiles(runs, os.path.join(out, "profiles.png"))
 
 
 if __name__ == "__main__":

@@ -143,6 +143,12 @@ int check_command(const RunArguments& args) {
                         scene->equilibrium->relaxation_time, scene->equilibrium->steps,
                         scene->equilibrium->residual_speed)
           : std::string());
+  if (scene->settling)
+    std::cout << fmt::format("settled start: {:.4g} s of settling at damping {:.4g} 1/s ({} steps), largest speed {:.3g} m/s, "
+                             "residual speed {:.3g} m/s, largest shift {:.3g} dp\n",
+                             scene->settling->duration, scene->settling->damping_rate, scene->settling->steps,
+                             scene->settling->largest_speed, scene->settling->residual_speed,
+                             scene->settling->largest_shift / o.dp);
   for (const auto& b : scene->bodies)
     std::cout << fmt::format(
         "body {:<10} {} motion, {} boundary particles\n"
@@ -176,12 +182,14 @@ int run_command(const RunArguments& args) {
                                                 "torque", "fx_pressure", "fy_pressure", "torque_pressure",
                                                 "fx_viscous", "fy_viscous", "torque_viscous", "fx_contact",
                                                 "fy_contact"});
+  // Forces in bodies.csv are means over the interval since the previous row (the momentum received / time).
   auto sample_bodies = [&]() {
     if (!bodies) return;
+    const auto mean = bodies->take_mean_forces();
     for (std::size_t b = 0; b < bodies->size(); ++b) {
       const auto s = bodies->state(int(b));
-      const auto& f = bodies->force[b];
-      const auto c = bodies->world.contact_force(int(b));
+      const auto& f = mean[b].fluid;
+      const auto& c = mean[b].contact;
       const double row[] = {s.position[0], s.position[1], s.angle, s.velocity[0], s.velocity[1],
                             s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
                             f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};

@@ -1,0 +1,28 @@
+#pragma once
+// Settling water at rest before a run: damped dynamics carry the hydrostatically compressed lattice to the nearest
+// stable arrangement, then velocities are zeroed and the clock restarts.
+//
+// Why: under any (p_i + p_j) pressure gradient a compressed square lattice is not a stable equilibrium. Its
+// particles can lower the scheme's energy by shearing towards a denser-looking arrangement (the number density of
+// a sheared lattice is a few per cent below the square one's at the same particle density), and a still tank
+// started from it stirs itself to speeds of tens of per cent of sqrt(g H) (issue 3's closing note). Settling with
+// damping releases that energy before t = 0. The same is done in SPH practice ("settling runs").
+// Bodies are left out while settling: their boundary particles stay where they are, like walls.
+#include "coupling/simulation.hpp"
+
+namespace slide {
+
+struct Relaxation {
+  double duration = 0.0;        // s of damped settling
+  double damping_rate = 0.0;    // 1/s
+  long steps = 0;
+  double largest_speed = 0.0;   // m/s, largest fluid speed reached while settling
+  double residual_speed = 0.0;  // m/s, at the end, before the velocities were zeroed
+  double largest_shift = 0.0;   // m, largest distance a fluid particle moved while settling
+};
+
+// Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
+// settling goes unstable. On return the simulation is at time 0 with every fluid velocity zero.
+Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate);
+
+}  // namespace slide
