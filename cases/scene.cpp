@@ -122,7 +122,7 @@ Schema make_schema() {
                                    "from the uncompressed lattice",
                                    {"hydrostatic", "settled", "lattice"}, "hydrostatic")},
        {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
-       {"settling_damping", S::number("settled start: velocity damping rate while settling", "1/s", 50.0, 0.0, inf,
+       {"settling_damping", S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, inf,
                                       true)},
        {"neighbor_skin", S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it",
                                    "dp", 0.3, 0.0, 1.0)}},
@@ -394,7 +394,21 @@ BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene
     std::vector<Vec<2>> face;
     for (const auto& v : outline) face.push_back(v2(v));
     face.push_back(face.front());
-    const auto pts = polyline_boundary(face, false, dp, boundary_layers(opt.re_over_dp));
+    auto pts = polyline_boundary(face, false, dp, boundary_layers(opt.re_over_dp));
+    // Acute corners (a wedge's tip): the first layer's mitred corner lies 0.5 dp / sin(angle / 2) inside the tip,
+    // which leaves the tip hollow, and fluid could slip into it. One more wall particle on the bisector, 0.55 dp
+    // nearer the tip, closes it.
+    for (std::size_t k = 0; k < outline.size(); ++k) {
+      const Vec<2> v = v2(outline[k]);
+      const Vec<2> a = (v2(outline[(k + outline.size() - 1) % outline.size()]) - v).normalized();
+      const Vec<2> b = (v2(outline[(k + 1) % outline.size()]) - v).normalized();
+      const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+      if (angle >= 0.5 * M_PI) continue;
+      const Vec<2> inward = (a + b).normalized();
+      const double s = 0.5 * dp / std::sin(0.5 * angle) - 0.55 * dp;
+      if (s < 0.5 * dp) continue;
+      pts.push_back({v + s * inward, -inward, s, 0});
+    }
     const Vec<2> c = v2(rigid::centroid(outline));
     const std::size_t first = P.size();
     for (const auto& bp : pts) {

@@ -70,7 +70,7 @@ TEST(FloatingBlock, DISABLED_DraftWithinOnePercent) {
 TEST(FloatingBlock, WaterDensityBlockStaysWhereItIsPut) {
   // Fully submerged, centre 0.15 m below the surface, released at once.
   const FloatResult r = run_block({"bodies[0].density=1000", "bodies[0].shape.center=[0.5, 0.15]",
-                                   "bodies[0].release_time=0", "end_time=1.0"},
+                                   "end_time=1.0"},
                                   0.5);
   std::printf("neutral block, 1 s: largest displacement %.2f mm, fluid force / weight - 1 = %+.3f %%\n",
               1000 * r.max_displacement, 100 * (r.mean_force_y / r.weight - 1));
