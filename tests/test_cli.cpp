@@ -63,12 +63,50 @@ TEST(Cli, OutOfRange) {
 
 TEST(Cli, WaterOverlappingWall) {
   expect_invalid(check_scene(kGoodScene, "--set 'fluid.regions[0].min=[-0.1, 0]'"), "fluid.regions[0]",
-                 "overlaps wall walls[0]");
+                 "water overlaps walls[0]");
 }
 
 TEST(Cli, EmptyRegion) {
   expect_invalid(check_scene(kGoodScene, "--set 'fluid.regions[0].max=[0.01, 0.01]'"), "fluid.regions[0]",
                  "holds no particle");
+}
+
+TEST(Cli, WaterInsideABody) {
+  // The block covers part of the water rectangle: explicit regions must keep clear of bodies.
+  expect_invalid(check_scene(std::string(kGoodScene) + "bodies:\n  - {name: block, shape: {type: box, center: [0.1, "
+                                                        "0.15], size: [0.1, 0.1]}, density: 500}\n"),
+                 "fluid.regions[0]", "inside body bodies[0]");
+}
+
+TEST(Cli, BodyNeedsDensityOrMass) {
+  expect_invalid(check_scene(std::string(kGoodScene) + "bodies:\n  - {name: block, shape: {type: box, center: [0.4, "
+                                                        "0.3], size: [0.1, 0.1]}}\n"),
+                 "bodies[0].density", "exactly one of density and mass");
+}
+
+TEST(Cli, BodyOutlineMustBeConvex) {
+  expect_invalid(check_scene(std::string(kGoodScene) + "bodies:\n  - {name: block, density: 500, shape: {type: "
+                                                        "polygon, points: [[0.3, 0.3], [0.5, 0.3], [0.4, 0.32], "
+                                                        "[0.4, 0.4]]}}\n"),
+                 "bodies[0].shape", "convex");
+}
+
+TEST(Cli, CheckReportsBodyMassAndBuoyancy) {
+  const CommandResult r = check_scene(R"(particle_spacing: 0.01
+end_time: 0.01
+fluid:
+  phases: [{name: water}]
+  regions: [{type: below_level, level: 0.3}]
+walls:
+  - points: [[0, 0.5], [0, 0], [1.0, 0], [1.0, 0.5]]
+bodies:
+  - {name: block, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.1]}, density: 500}
+)");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("mass            10 kg/m (lattice sum 10)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("displaced below the still-water level 0.01 m^2, buoyancy / weight 1"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("2900 fluid"), std::string::npos) << r.output;  // the block's volume is left dry
 }
 
 TEST(Cli, BadOverride) { expect_invalid(check_scene(kGoodScene, "--set nonsense"), "--set", "="); }
@@ -173,7 +211,8 @@ TEST(Cli, OneAndTwoThreadsGiveIdenticalFiles) {
     const fs::path out = fresh_directory("threads" + std::to_string(threads));
     const CommandResult r =
         run_command(slide_binary() + " run " + scene + " --out " + out.string() + " --quiet --threads " +
-                    std::to_string(threads) + " --set end_time=0.06 --set output.snapshot_interval=0.02");
+                    std::to_string(threads) +
+                    " --set end_time=0.06 --set output.snapshot_interval=0.02 --set method.settling_time=0.05");
     ASSERT_TRUE(fs::exists(out / "gauges.csv"));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     outs.push_back(out);

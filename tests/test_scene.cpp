@@ -14,13 +14,18 @@ TEST(Scene, SchemaDocumentIsCurrent) {
 }
 
 TEST(Scene, ShippedScenesBuild) {
-  auto tank = load_shipped_scene("hydrostatic_2d.yaml");
+  auto tank = load_shipped_scene("hydrostatic_2d.yaml", {"method.initial_state=hydrostatic"});
   EXPECT_EQ(tank->fluid_count, 5000u);  // 1 m x 0.5 m at dp = 0.01 m
   EXPECT_NEAR(tank->simulation->options.sound_speed, 10.0 * std::sqrt(9.81 * 0.5), 1e-9);
   EXPECT_TRUE(tank->equilibrium.has_value());
   auto bench = load_shipped_scene("dam_break_bench_2d.yaml");
   EXPECT_EQ(bench->fluid_count, 20000u);
   EXPECT_NEAR(bench->deepest_water, 2.0, 1e-9);
+  auto block = load_shipped_scene("floating_block_2d.yaml", {"method.initial_state=hydrostatic"});
+  EXPECT_EQ(block->fluid_count, 2900u);  // 100 x 30 lattice points less the block's 20 x 5 below the level
+  ASSERT_EQ(block->bodies.size(), 1u);
+  EXPECT_NEAR(block->bodies[0].mass, 10.0, 1e-12);
+  EXPECT_NEAR(block->bodies[0].buoyancy_ratio, 1.0, 1e-12);
   auto dam = load_shipped_scene("dam_break_2d.yaml");
   EXPECT_EQ(dam->fluid_count, 800u);  // a/20 by 2a/20
   EXPECT_TRUE(dam->surge_front.enabled);
