@@ -66,61 +66,49 @@ void RigidBodies::accumulate(const Particles<2>& P, const std::vector<Vec<2>>& f
   }
 }
 
-// Viscous force of fluid i on ... of body particle j on fluid i: m_i * scale_i * term_ij; the body gets minus it.
-void RigidBodies::add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0,
-                                     double lambda, WallSlip slip, double volume) {
+// For every body particle j, the sum over its fluid neighbours i of pair_force(i, j) (the force fluid i exerts on
+// the body through j), then summed per body in index order.
+template <class PairForce>
+void RigidBodies::exchange(const Particles<2>& P, const NeighborList& nl, bool viscous, const PairForce& pair_force) {
   scratch_.assign(P.size(), Vec<2>::Zero());
-  const double re2 = re * re;
   parallel_for(P.size(), [&](std::size_t j) {
     if (P.body[j] < 0) return;
     Vec<2> f = Vec<2>::Zero();
-    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q) {
-      const std::uint32_t i = *q;
-      if (P.kind[i] != Kind::fluid) continue;
-      const double r2 = distance_squared<2>(P.position[j], P.position[i]);
-      if (r2 >= re2) continue;
-      const double mass = P.density[i] * volume;
-      f -= (mass * viscous_scale<2>(i, P, n0, lambda)) * viscous_pair_term<2>(i, j, r2, P, re, slip);
-    }
+    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q)
+      if (P.kind[*q] == Kind::fluid) f += pair_force(*q, static_cast<std::uint32_t>(j));
     scratch_[j] = f;
   });
-  accumulate(P, scratch_, true);
+  accumulate(P, scratch_, viscous);
+}
+
+// Viscous force of body particle j on fluid i: m_i scale_i term_ij; the body gets minus it.
+void RigidBodies::add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0,
+                                     double lambda, WallSlip slip, double volume) {
+  const double re2 = re * re;
+  exchange(P, nl, true, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+    const double r2 = distance_squared<2>(P.position[j], P.position[i]);
+    if (r2 >= re2) return Vec<2>::Zero();
+    const double mass = P.density[i] * volume;
+    return -(mass * viscous_scale<2>(i, P, n0, lambda)) * viscous_pair_term<2>(i, j, r2, P, re, slip);
+  });
 }
 
 // Pressure force of body particle j on fluid i: -V_i grad_pair p_i (V_i = m_i / rho_i); the body gets plus it.
 void RigidBodies::add_pressure_forces(const Particles<2>& P, const NeighborList& nl, GradientModel model, double re,
                                       double n0, double kappa, double volume) {
-  scratch_.assign(P.size(), Vec<2>::Zero());
-  parallel_for(P.size(), [&](std::size_t j) {
-    if (P.body[j] < 0) return;
-    Vec<2> f = Vec<2>::Zero();
-    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q) {
-      const std::uint32_t i = *q;
-      if (P.kind[i] != Kind::fluid) continue;
-      const double mass = P.density[i] * volume;
-      f += (mass / P.density[i]) * pressure_gradient_pair<2>(model, i, j, P, nl, re, n0, kappa);
-    }
-    scratch_[j] = f;
+  exchange(P, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+    const double mass = P.density[i] * volume;
+    return (mass / P.density[i]) * pressure_gradient_pair<2>(model, i, j, P, nl, re, n0, kappa);
   });
-  accumulate(P, scratch_, false);
 }
 
 // Collision of fluid i with body particle j changes u_i by du_ij: the body receives the impulse -m_i du_ij.
 void RigidBodies::add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance,
                                        double restitution, double volume, double dt) {
-  scratch_.assign(P.size(), Vec<2>::Zero());
-  parallel_for(P.size(), [&](std::size_t j) {
-    if (P.body[j] < 0) return;
-    Vec<2> f = Vec<2>::Zero();
-    for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q) {
-      const std::uint32_t i = *q;
-      if (P.kind[i] != Kind::fluid) continue;
-      const double mass = P.density[i] * volume;
-      f -= (mass / dt) * collision_pair_change<2>(i, j, P, distance, restitution);
-    }
-    scratch_[j] = f;
+  exchange(P, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+    const double mass = P.density[i] * volume;
+    return -(mass / dt) * collision_pair_change<2>(i, j, P, distance, restitution);
   });
-  accumulate(P, scratch_, false);
 }
 
 void RigidBodies::advance(double time_after, double dt) {

@@ -76,6 +76,8 @@ class RigidBodies {
 
  private:
   void accumulate(const Particles<2>& P, const std::vector<Vec<2>>& per_particle, bool viscous);
+  template <class PairForce>
+  void exchange(const Particles<2>& P, const NeighborList& nl, bool viscous, const PairForce& pair_force);
   BodyFluidForce& pending(int b) { return pending_[b]; }
   std::vector<BodyFluidForce> pending_;
   std::vector<MeanForces> impulse_;  // force x time since the last take_mean_forces
