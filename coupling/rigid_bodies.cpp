@@ -29,19 +29,33 @@ void RigidBodies::place_particles(Particles<2>& P, double time) {
     if (motion[b].mode == BodyMotion::Mode::prescribed) world.set_kinematic_state(int(b), motion[b].prescribed->at(time));
   std::vector<rigid::PlanarState> s(size());
   std::vector<double> c(size()), sn(size());
+  std::vector<Vec<2>> linear_acceleration(size(), Vec<2>::Zero());
+  std::vector<double> angular_acceleration(size(), 0.0);
+  const bool have_previous = placed_state_.size() == size() && time > placed_time_;
   for (std::size_t b = 0; b < size(); ++b) {
     s[b] = world.state(int(b));
     c[b] = std::cos(s[b].angle);
     sn[b] = std::sin(s[b].angle);
+    if (have_previous) {
+      const double span = time - placed_time_;
+      const auto& before = placed_state_[b];
+      linear_acceleration[b] = Vec<2>(s[b].velocity[0] - before.velocity[0], s[b].velocity[1] - before.velocity[1]) / span;
+      angular_acceleration[b] = (s[b].angular_velocity - before.angular_velocity) / span;
+    }
   }
+  placed_state_ = s;
+  placed_time_ = time;
   parallel_for(P.size(), [&](std::size_t i) {
     const int b = P.body[i];
     if (b < 0) return;
     const Vec<2> r = rotate(P.body_offset[i], c[b], sn[b]);
     const auto& st = s[b];
+    const double omega = st.angular_velocity;
     P.position[i] = Vec<2>(st.position[0], st.position[1]) + r;
     // v = V + omega x r, in 2-D omega x r = omega (-r_y, r_x).
-    P.velocity[i] = Vec<2>(st.velocity[0], st.velocity[1]) + st.angular_velocity * Vec<2>(-r[1], r[0]);
+    P.velocity[i] = Vec<2>(st.velocity[0], st.velocity[1]) + omega * Vec<2>(-r[1], r[0]);
+    // a = A + alpha x r + omega x (omega x r) = A + alpha (-r_y, r_x) - omega^2 r.
+    P.acceleration[i] = linear_acceleration[b] + angular_acceleration[b] * Vec<2>(-r[1], r[0]) - (omega * omega) * r;
     P.wall_normal[i] = rotate(P.body_normal[i], c[b], sn[b]);
   });
 }

@@ -50,8 +50,10 @@ class RigidBodies {
   // Pose and velocity of body b now.
   rigid::PlanarState state(int b) const { return world.state(b); }
 
-  // Applies the poses at `time` (prescribed bodies) and sets every body particle's position, velocity and
-  // normal from its body's pose.
+  // Applies the poses at `time` (prescribed bodies) and sets every body particle's position, velocity, normal and
+  // acceleration from its body's pose. The acceleration is the rigid field a = A + alpha x r - omega^2 r, with A
+  // and alpha the body's mean accelerations since the previous placement (zero at the first one, or when time
+  // went back, as after settling); the boundary pressure needs it (fluid/wall_pressure.hpp: head along g - a).
   void place_particles(Particles<2>& P, double time);
 
   // The three exchanges, each called where the fluid computes the same pair terms, before the fluid's update.
@@ -83,6 +85,8 @@ class RigidBodies {
   std::vector<MeanForces> impulse_;  // force x time since the last take_mean_forces
   double impulse_time_ = 0.0;
   std::vector<Vec<2>> scratch_;
+  std::vector<rigid::PlanarState> placed_state_;  // at the last placement
+  double placed_time_ = 0.0;
 };
 
 }  // namespace slide

@@ -70,11 +70,15 @@ void Simulation<D>::compute_pressure() {
   });
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] == Kind::fluid) return;
+    // The head between a boundary particle and the fluid follows g - a_w: a wall that accelerates into the water
+    // pushes harder (Adami, Hu & Adams 2012, eq. 27). Fixed walls have a_w = 0; body particles carry their body's
+    // rigid acceleration (coupling/rigid_bodies.hpp).
+    const Vec<D> head_acceleration = options.gravity - P.acceleration[i];
     double p = 0.0;
     if (options.wall_pressure == WP::extrapolated)
-      p = extrapolated_wall_pressure<D>(i, P, list_, r_e, options.gravity);
+      p = extrapolated_wall_pressure<D>(i, P, list_, r_e, head_acceleration);
     else if (options.wall_pressure == WP::mirror)
-      p = mirror_wall_pressure<D>(i, P, grid_, options.dp, options.gravity);
+      p = mirror_wall_pressure<D>(i, P, grid_, options.dp, head_acceleration);
     else if (P.kind[i] == Kind::wall && P.number_density[i] >= surface_n)
       p = eos.pressure(P.number_density[i], P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
@@ -94,7 +98,9 @@ template <int D>
 std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
   const auto& P = particles;
   const double dp = options.dp;
-  const double u_max = max_fluid_speed();
+  // Moving boundaries count in the CFL limit: a slide faster than the water around it must not cross more than a
+  // fraction of a spacing per step either (fixed walls have zero velocity).
+  const double u_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) { return P.velocity[i].squaredNorm(); }));
   const double a_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) {
     return P.kind[i] == Kind::fluid ? P.acceleration[i].squaredNorm() : 0.0;
   }));

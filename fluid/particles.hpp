@@ -17,7 +17,8 @@ template <int D>
 struct Particles {
   std::vector<Vec<D>> position;
   std::vector<Vec<D>> velocity;
-  std::vector<Vec<D>> acceleration;  // total acceleration of the last step (fluid), used by the force time-step limit
+  std::vector<Vec<D>> acceleration;  // fluid: total of the last step (force time-step limit); body particles: their
+                                     // body's rigid acceleration; fixed walls: zero
   std::vector<double> pressure;
   std::vector<double> number_density;
   std::vector<double> density;    // reference density of the particle's phase, kg/m^3

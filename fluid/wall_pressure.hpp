@@ -9,13 +9,14 @@
 namespace slide {
 
 // Pressure of a boundary particle (wall or dummy) extrapolated from its fluid neighbours
-// (Adami, Hu & Adams 2012, J. Comput. Phys. 231, eq. 27, for a wall at rest):
-//   p_w = ( sum_f p_f W_wf + g . sum_f rho_f (r_w - r_f) W_wf ) / sum_f W_wf.
+// (Adami, Hu & Adams 2012, J. Comput. Phys. 231, eq. 27):
+//   p_w = ( sum_f p_f W_wf + (g - a_w) . sum_f rho_f (r_w - r_f) W_wf ) / sum_f W_wf,
+// a_w the wall's acceleration; `head_acceleration` is g - a_w (g for a wall at rest).
 // It continues the fluid's pressure field, hydrostatic part included, into the wall, so the pressure gradient
 // near a wall sees a complete and consistent neighbourhood. A boundary particle with no fluid neighbour has p = 0.
 template <int D>
 double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const NeighborList& nl, double re,
-                                  const Vec<D>& gravity) {
+                                  const Vec<D>& head_acceleration) {
   const auto& x = P.position;
   const double re2 = re * re;
   double sum_w = 0.0, sum_pw = 0.0, sum_head = 0.0;
@@ -28,7 +29,7 @@ double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const Ne
     const double weight = kernel_weight(std::sqrt(r2), re);
     sum_w += weight;
     sum_pw += P.pressure[f] * weight;
-    sum_head += P.density[f] * gravity.dot(r_wf) * weight;
+    sum_head += P.density[f] * head_acceleration.dot(r_wf) * weight;
   }
   if (sum_w <= 0.0) return 0.0;
   return (sum_pw + sum_head) / sum_w;
@@ -64,8 +65,8 @@ double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& 
 // Pressure of a boundary particle from its mirror image in the fluid (fixed ghost particles: Takeda, Miyama & Sekiya
 // 1994; Marrone et al. 2011): the image point x_m = x_w + 2 d_w n_w lies as far in front of the face as the particle
 // lies behind it; its pressure is a Shepard interpolation of the fluid's pressure around x_m, and the hydrostatic
-// head between image and particle is added (wall at rest):
-//   p_w = sum_f p_f w_f / sum_f w_f + rho_0 g . (x_w - x_m),
+// head between image and particle is added, along g - a_w for a wall accelerating at a_w (`head_acceleration`):
+//   p_w = sum_f p_f w_f / sum_f w_f + rho_0 (g - a_w) . (x_w - x_m),
 //   w_f = W(|x_f - x_m|; dp) + 0.05 W(|x_f - x_m|; 1.5 dp).
 // The narrow kernel makes a particle sitting on the image (the mirrored lattice partner) dominate, so a wall beside
 // still water carries exactly its partner's pressure, including at a free surface where the pressure profile is not
@@ -74,7 +75,7 @@ double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& 
 // below, and the wall pushes the surface particles off it. No fluid near the image (a wall above the water): p = 0.
 template <int D>
 double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, double dp,
-                            const Vec<D>& gravity) {
+                            const Vec<D>& head_acceleration) {
   const Vec<D> image = P.position[w] + (2.0 * P.wall_depth[w]) * P.wall_normal[w];
   double sum_w = 0.0, sum_pw = 0.0, sum_rho_w = 0.0;
   grid.for_each_near(image, 1.5 * dp, P.position, [&](std::uint32_t f, double r2) {
@@ -86,7 +87,7 @@ double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const Neighbor
     sum_rho_w += weight * P.density[f];
   });
   if (sum_w <= 0.0) return 0.0;
-  return (sum_pw + sum_rho_w * gravity.dot(P.position[w] - image)) / sum_w;
+  return (sum_pw + sum_rho_w * head_acceleration.dot(P.position[w] - image)) / sum_w;
 }
 
 }  // namespace slide

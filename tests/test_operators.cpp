@@ -52,7 +52,9 @@ void expect_number_density_is_n0() {
   std::vector<double> n;
   compute_number_density<D>(L.particles.position, L.list, L.re, n);
   for (std::size_t i = 0; i < n.size(); ++i)
-    if (L.interior(i)) EXPECT_NEAR(n[i], L.constants.n0, 1e-12);
+    if (L.interior(i)) {
+      EXPECT_NEAR(n[i], L.constants.n0, 1e-12);
+    }
 }
 TEST(Operators, NumberDensityIsN0OnLattice2D) { expect_number_density_is_n0<2>(); }
 TEST(Operators, NumberDensityIsN0OnLattice3D) { expect_number_density_is_n0<3>(); }
@@ -91,9 +93,10 @@ void expect_laplacian_of_quadratic_field_exact() {
     for (int k = 0; k < D; ++k) phi[i] += (1.0 + k) * x[k] * x[k];
   }
   for (std::size_t i = 0; i < phi.size(); ++i)
-    if (L.interior(i))
+    if (L.interior(i)) {
       ASSERT_NEAR(mps_laplacian<D>(i, L.particles.position, phi, L.list, L.re, L.constants.n0, L.constants.lambda),
                   exact, 1e-9 * exact);
+    }
   // A vector field: each component separately.
   std::vector<Vec<D>> u(L.particles.size());
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = Vec<D>::Constant(phi[i]);

@@ -40,16 +40,79 @@ TEST(RigidCoupling, BodyParticlesFollowThePoseAfterManySteps) {
   // Closed form: X = X0 + V t, R = rotation by omega t; every particle at X + R (x0 - X0), its velocity V + w x r.
   const double t = steps * dt, c = std::cos(omega * t), s = std::sin(omega * t);
   const Vec<2> X = centre + t * v;
-  double worst = 0.0, worst_v = 0.0;
+  double worst = 0.0, worst_v = 0.0, worst_a = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     const Vec<2> r0 = start[i] - centre;
     const Vec<2> r(c * r0[0] - s * r0[1], s * r0[0] + c * r0[1]);
     worst = std::max(worst, (P.position[i] - (X + r)).norm());
     worst_v = std::max(worst_v, (P.velocity[i] - (v + omega * Vec<2>(-r[1], r[0]))).norm());
+    // Uniform spin: only the centripetal acceleration -omega^2 r.
+    worst_a = std::max(worst_a, (P.acceleration[i] + (omega * omega) * r).norm());
     EXPECT_NEAR((P.wall_normal[i] - Vec<2>(c, s)).norm(), 0.0, 1e-9);
   }
   EXPECT_LT(worst, 1e-9);
   EXPECT_LT(worst_v, 1e-9);
+  EXPECT_LT(worst_a, 1e-9);
+}
+
+// A falling, spun-up body: its particles carry the rigid acceleration g + alpha x r - omega^2 r, here with alpha = 0.
+TEST(RigidCoupling, BodyParticlesCarryTheRigidAcceleration) {
+  const Vec<2> g(0.0, -9.81);
+  RigidBodies bodies(g, 1e-3);
+  rigid::BodySpec spec;
+  spec.outline = {rigid::Vec2(0.0, 0.0), rigid::Vec2(0.2, 0.0), rigid::Vec2(0.2, 0.1), rigid::Vec2(0.0, 0.1)};
+  spec.mass = 10.0;
+  spec.inertia = 10.0 * (0.04 + 0.01) / 12.0;
+  const int b = bodies.add("box", spec, BodyMotion{}, 500.0);
+  Particles<2> P;
+  for (const Vec<2>& x : {Vec<2>(0.0, 0.0), Vec<2>(0.2, 0.1), Vec<2>(0.05, 0.1)}) {
+    const std::size_t i = P.add(x, Kind::wall, 0, 500.0, 0.0);
+    P.body[i] = b;
+    P.body_offset[i] = x - Vec<2>(0.1, 0.05);
+    P.body_normal[i] = Vec<2>(1.0, 0.0);
+  }
+  const double omega = 2.0, dt = 1e-4;
+  bodies.world.set_velocity(b, rigid::Vec2(0.0, 0.0), omega);
+  bodies.place_particles(P, 0.0);
+  // Nothing to difference at the first placement: only the centripetal part.
+  for (std::size_t i = 0; i < P.size(); ++i)
+    EXPECT_LT((P.acceleration[i] + (omega * omega) * (P.position[i] - Vec<2>(0.1, 0.05))).norm(), 1e-12);
+  for (int k = 1; k <= 100; ++k) {
+    bodies.advance(k * dt, dt);
+    bodies.place_particles(P, k * dt);
+  }
+  const auto st = bodies.state(b);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const Vec<2> r = P.position[i] - Vec<2>(st.position[0], st.position[1]);
+    EXPECT_LT((P.acceleration[i] - (g - (omega * omega) * r)).norm(), 1e-8) << i;
+  }
+}
+
+// A body faster than sound in the water still limits the time step: the CFL limit counts boundary particles' speeds.
+TEST(RigidCoupling, MovingBodyEntersTheCflLimit) {
+  const auto dir = fresh_directory("cfl_body");
+  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
+end_time: 1
+gravity: [0, 0]
+method: {sound_speed: 10, initial_state: lattice}
+fluid:
+  phases: [{name: water}]
+  regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.1]}]
+bodies:
+  - name: block
+    shape: {type: box, center: [0.2, 0.2], size: [0.1, 0.05]}
+    density: 800
+)");
+  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto& sim = *scene->simulation;
+  const double at_rest = sim.allowed_time_step().first;
+  const double speed = 40.0;
+  sim.bodies->world.set_velocity(0, rigid::Vec2(speed, 0.0), 0.0);
+  sim.bodies->place_particles(sim.particles, sim.time);
+  const auto [dt, limit] = sim.allowed_time_step();
+  EXPECT_EQ(limit, TimeStepLimit::cfl);
+  EXPECT_NEAR(dt, sim.options.cfl * sim.options.dp / (sim.options.sound_speed + speed), 1e-12);
+  EXPECT_LT(dt, 0.5 * at_rest);
 }
 
 // Water around a free body, no gravity and no walls: the body is pushed through the water, and the total momentum

@@ -35,7 +35,9 @@ TEST(Walls, RectangularTankIsALattice) {
   for (const auto& b : pts)
     if (b.layer == 0 && std::abs(b.position[1] + 0.05) < 1e-9) {
       ++bottom;
-      if (b.position[0] > 0 && b.position[0] < 2.0) EXPECT_NEAR(b.normal[1], 1.0, 1e-12);
+      if (b.position[0] > 0 && b.position[0] < 2.0) {
+        EXPECT_NEAR(b.normal[1], 1.0, 1e-12);
+      }
     }
   EXPECT_EQ(bottom, 22);
   // Corner particle of layer 1: (-0.15, -0.15), its image through the corner is the fluid site (0.15, 0.15).
