@@ -60,9 +60,10 @@ TEST(FloatingBlock, FluidForceBalancesWeight) {
   EXPECT_NEAR(r.draft, exact_draft, 0.1 * exact_draft);
 }
 
-// The issue's draft target. Not met yet: measured against the water level at the gauges, the draft is about 2 %
-// off (issue 4's closing note has the figures); the free surface itself is only located to a fraction of dp, and
-// the 1 % here is 0.05 dp. Kept, disabled, so that it stays visible.
+// The issue's draft target. Not met yet: measured against the water level at the gauges, the draft is 1.9 % short
+// (issue 4's closing notes have the figures). 1 % here is 0.05 dp; in the settled still tank the bottom pressure
+// already reads as if the surface stood 0.055 dp above the level that the gauges and the water's volume agree on,
+// and a block floating on that pressure sits high by about as much. Kept, disabled, so that it stays visible.
 TEST(FloatingBlock, DISABLED_DraftWithinOnePercent) {
   const FloatResult r = run_block({}, 1.0);
   EXPECT_NEAR(r.draft, 0.05, 0.0005);
