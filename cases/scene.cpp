@@ -33,7 +33,8 @@ Schema make_schema() {
                        {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, inf, true)},
                        {"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf)}});
   auto region = S::variant(
-      "a region filled with fluid particles on the lattice x = (i + 1/2) dp, y = (j + 1/2) dp", "type",
+      "a region filled with fluid particles on the lattice (square: x = (i + 1/2) dp, y = (j + 1/2) dp; hexagonal: "
+      "fluid/lattice.hpp)", "type",
       {{"rectangle", S::map("the particles whose cell lies inside [min, max]",
                             {{"phase", S::text("phase name (default: the first phase)", "")},
                              {"min", S::vector("lower-left corner", "m", 2, std::nullopt)},
@@ -43,7 +44,8 @@ Schema make_schema() {
                            {"points", point_list("polygon vertices (closed automatically)", 3)}})},
        {"below_level", S::map("water below a level inside the walls: every lattice point below the level, "
                               "inside the walls' bounding box, on the fluid side of the nearest wall face and at "
-                              "least dp/2 from it",
+                              "least dp/2 from it (hexagonal lattice: any distance in front of it; the points on or "
+                              "behind it are the walls')",
                               {{"phase", S::text("phase name (default: the first phase)", "")},
                                {"level", S::number("still-water level", "m", std::nullopt)}})}});
   auto wall = S::map(
@@ -174,6 +176,12 @@ Schema make_schema() {
        {"dimension", S::integer("spatial dimension (scenes are 2-D for now; the solver is built for 2 and 3)", 2L,
                                 2L, 2L)},
        {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, inf, true, false)},
+       {"lattice", S::choice("lattice the particles start on, one particle per dp^2 either way: square, or "
+                             "hexagonal (nearest spacing 1.0746 dp), the stable packing that still water needs to "
+                             "stay at rest; with hexagonal, walls are cut from the same lattice (layers unused), "
+                             "the wall pressure must be extrapolated or number_density, the initial state lattice or "
+                             "settled, and there can be no bodies",
+                             {"square", "hexagonal"}, "square")},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
        {"domain", domain},
@@ -226,9 +234,11 @@ double signed_face_distance(const std::vector<FaceSegment>& faces, const Vec<2>&
     const double t = std::clamp((p - f.a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     const Vec<2> q = f.a + t * ab;
     const double d = (p - q).norm();
-    if (d < best - 1e-12) {
-      best = d;
-      signed_best = (p - q).dot(f.inward) >= 0.0 ? d : -d;
+    const double s = (p - q).dot(f.inward) >= 0.0 ? d : -d;
+    // A point outside a corner is as far from the vertex along both faces; it lies behind the wall.
+    if (d < best - 1e-12 || (d <= best + 1e-12 && s < signed_best)) {
+      best = std::min(best, d);
+      signed_best = s;
     }
   }
   return signed_best;
@@ -507,6 +517,22 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   const double dp = r["particle_spacing"].as<double>();
   const YAML::Node m = r["method"];
   opt.dp = dp;
+  const bool hexagonal = r["lattice"].as<std::string>() == "hexagonal";
+  opt.lattice = hexagonal ? LatticeKind::hexagonal : LatticeKind::square;
+  if (hexagonal) {
+    if (m["wall_pressure"].as<std::string>() == "mirror")
+      throw SceneError("method.wall_pressure", "the mirror model needs lattice: square (its images assume the square "
+                                               "lattice); use extrapolated or number_density with lattice: hexagonal");
+    if (m["initial_state"].as<std::string>() == "hydrostatic")
+      throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
+                                               "compresses it); the column-wise hydrostatic start needs lattice: square");
+    if (r["bodies"].size() > 0)
+      throw SceneError("bodies", "bodies need lattice: square for now (their boundary particles follow the outline)");
+    for (std::size_t w = 0; w < r["walls"].size(); ++w)
+      if (r["walls"][w]["layers"].as<long>() != 0)
+        throw SceneError(fmt::format("walls[{}].layers", w),
+                         "with lattice: hexagonal walls are cut from the lattice to the depth re; leave layers at 0");
+  }
   opt.re_over_dp = m["kernel_radius"].as<double>();
   opt.skin_over_dp = m["neighbor_skin"].as<double>();
   const std::string grad = m["gradient"].as<std::string>();
@@ -558,7 +584,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     const int layers = layers_key == 0 ? boundary_layers(opt.re_over_dp) : static_cast<int>(layers_key);
     std::vector<BoundaryPoint> pts;
     try {
-      pts = polyline_boundary(face, left, dp, layers);
+      pts = hexagonal ? lattice_boundary(face, left, dp, opt.re_over_dp * dp, opt.lattice)
+                      : polyline_boundary(face, left, dp, layers);
     } catch (const std::invalid_argument& e) {
       throw SceneError(fmt::format("walls[{}].points", w), e.what());
     }
@@ -614,14 +641,17 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     Vec<2> lo, hi;
     std::function<bool(const Vec<2>&)> inside;
     std::vector<Vec<2>> poly;
+    // Half the extent of a particle's cell: dp / 2 on the square lattice; half a spacing across and half a row
+    // spacing up on the hexagonal one.
+    const double half_x = 0.5 * nearest_spacing(opt.lattice, dp), half_y = 0.5 * row_spacing(opt.lattice, dp);
     if (type == "rectangle") {
       lo = vec2(rn["min"]);
       hi = vec2(rn["max"]);
       if (!(lo[0] < hi[0] && lo[1] < hi[1])) throw SceneError(path + ".max", "must exceed min in x and y");
-      inside = [&](const Vec<2>& p) {
+      inside = [&, half_x, half_y](const Vec<2>& p) {
         const double e = 1e-9 * dp;
-        return p[0] - 0.5 * dp >= lo[0] - e && p[0] + 0.5 * dp <= hi[0] + e && p[1] - 0.5 * dp >= lo[1] - e &&
-               p[1] + 0.5 * dp <= hi[1] + e;
+        return p[0] - half_x >= lo[0] - e && p[0] + half_x <= hi[0] + e && p[1] - half_y >= lo[1] - e &&
+               p[1] + half_y <= hi[1] + e;
       };
     } else if (type == "polygon") {
       poly = points_of(rn["points"]);
@@ -633,18 +663,17 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
       const double level = rn["level"].as<double>();
       lo = face_lo;
       hi = Vec<2>(face_hi[0], std::min(level, face_hi[1]));
-      inside = [&, level](const Vec<2>& p) {
-        return p[1] < level && signed_face_distance(faces, p) >= 0.5 * dp - 1e-9 * dp && clear_of_bodies(p) < 0;
+      // On the hexagonal lattice the walls hold every lattice point on or behind a face, the water every one in
+      // front of it; on the square lattice the water starts half a spacing in front of the faces.
+      const double clearance = hexagonal ? 1e-9 * dp : 0.5 * dp - 1e-9 * dp;
+      inside = [&, level, clearance](const Vec<2>& p) {
+        return p[1] < level && signed_face_distance(faces, p) >= clearance && clear_of_bodies(p) < 0;
       };
       still_level = std::max(still_level, level);
     }
     std::size_t added = 0;
-    const long i0 = static_cast<long>(std::floor(lo[0] / dp)) - 1, i1 = static_cast<long>(std::ceil(hi[0] / dp)) + 1;
-    const long j0 = static_cast<long>(std::floor(lo[1] / dp)) - 1, j1 = static_cast<long>(std::ceil(hi[1] / dp)) + 1;
-    for (long j = j0; j <= j1; ++j)
-      for (long i = i0; i <= i1; ++i) {
-        const Vec<2> p((i + 0.5) * dp, (j + 0.5) * dp);
-        if (!inside(p)) continue;
+    for_each_lattice_point(opt.lattice, dp, lo, hi, [&](const Vec<2>& p) {
+        if (!inside(p)) return;
         if (const int b = clear_of_bodies(p); b >= 0)
           throw SceneError(path, fmt::format("water at ({:.6g}, {:.6g}) lies inside body bodies[{}] or within dp/2 of "
                                              "its outline",
@@ -652,7 +681,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
         P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase_props[ph].first, phase_props[ph].second);
         region_of_particle.push_back(k);
         ++added;
-      }
+      });
     if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", dp));
   }
 
@@ -681,7 +710,9 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
 
   // Sound speed and hydrostatic start.
   const double g = -opt.gravity[1];
-  scene->deepest_water = compress_hydrostatically<2>(P, dp, re, EquationOfState(1.0, 1.0, opt.gamma), g, false, {});
+  scene->deepest_water =
+      hexagonal ? deepest_water<2>(P, dp, 2.0 * row_spacing(opt.lattice, dp))
+                : compress_hydrostatically<2>(P, dp, re, EquationOfState(1.0, 1.0, opt.gamma), g, false, {});
   const double c0_key = m["sound_speed"].as<double>();
   if (c0_key > 0.0) {
     opt.sound_speed = c0_key;
@@ -696,7 +727,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   const std::string initial_state = m["initial_state"].as<std::string>();
   if (initial_state == "settled" && !(g > 0.0))
     throw SceneError("method.initial_state", "a settled start needs downward gravity");
-  if (initial_state != "lattice" && g > 0.0) {
+  // The hexagonal lattice is compressed by settling alone (its columns are not the square lattice's runs).
+  if (initial_state != "lattice" && g > 0.0 && !hexagonal) {
     const LatticeConstants lc = lattice_constants<2>(dp, re);
     const int rows = static_cast<int>(std::lround(scene->deepest_water / dp));
     try {

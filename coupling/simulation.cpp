@@ -15,7 +15,7 @@ namespace slide {
 template <int D>
 void Simulation<D>::initialise() {
   const double dp = options.dp;
-  lattice = lattice_constants<D>(dp, re());
+  lattice = lattice_constants<D>(dp, re(), options.lattice);
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   grid_ = NeighborGrid<D>(options.domain_lo, options.domain_hi, re() + options.skin_over_dp * dp);
   scratch_.assign(particles.size(), Vec<D>::Zero());

@@ -12,6 +12,7 @@
 #include "fluid/equation_of_state.hpp"
 #include "fluid/gradient.hpp"
 #include "fluid/kernel.hpp"
+#include "fluid/lattice.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/viscosity.hpp"
@@ -24,6 +25,7 @@ template <int D>
 struct FluidOptions {
   double dp = 0.01;                 // particle spacing, m
   double re_over_dp = 2.1;          // kernel radius in spacings
+  LatticeKind lattice = LatticeKind::square;  // the lattice the particles start on: n0, lambda, kappa are its sums
   double skin_over_dp = 0.3;        // neighbour-list skin in spacings
   GradientModel gradient = GradientModel::symmetric;
   double gamma = 7.0;

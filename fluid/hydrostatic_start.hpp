@@ -8,6 +8,7 @@
 // gives the hydrostatic pressure rho g z through the equation of state. The run's bottom gap (to the wall or floor
 // below it) is compressed the same way, its top is the free surface at half a spacing above the top particle.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -178,6 +179,31 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
       }
     }
     P.position[i][up] += shift;
+  }
+  return deepest;
+}
+
+// Deepest water of any vertical run of fluid particles, for lattices whose columns are `pitch` apart vertically
+// (dp on the square lattice, two row spacings on the hexagonal one, whose alternate rows are offset): particles of
+// one column whose consecutive gaps are below 1.5 pitch form a run, and each stands for one pitch of height.
+template <int D>
+double deepest_water(const Particles<D>& P, double dp, double pitch) {
+  constexpr int up = D - 1;
+  std::map<std::array<long, 2>, std::vector<double>> columns;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid) continue;
+    columns[{std::lround(P.position[i][0] / dp * 8.0), D == 3 ? std::lround(P.position[i][1] / dp * 8.0) : 0L}]
+        .push_back(P.position[i][up]);
+  }
+  double deepest = 0.0;
+  for (auto& [key, ys] : columns) {
+    std::sort(ys.begin(), ys.end());
+    std::size_t start = 0;
+    for (std::size_t k = 1; k <= ys.size(); ++k)
+      if (k == ys.size() || ys[k] - ys[k - 1] >= 1.5 * pitch) {
+        deepest = std::max(deepest, ys[k - 1] - ys[start] + pitch);
+        start = k;
+      }
   }
   return deepest;
 }

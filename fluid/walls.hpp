@@ -2,10 +2,13 @@
 // Boundary particles from a wall described by its face: a polyline in 2-D with the fluid on one side.
 // Layer k (k = 0 the wall layer, k >= 1 dummy layers) lies at (k + 1/2) dp behind the face, so the first fluid
 // particles, half a spacing in front of the face, are one spacing from the wall layer.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "fluid/lattice.hpp"
 #include "fluid/particles.hpp"
 
 namespace slide {
@@ -86,6 +89,49 @@ inline std::vector<BoundaryPoint> polyline_boundary(const std::vector<Vec<2>>& f
       }
     }
   }
+  return out;
+}
+
+// Boundary particles on the fluid's own lattice (used with the hexagonal lattice, whose rows cannot follow a face):
+// every lattice point that lies on or behind the face, no deeper than re, and whose nearest point on the face is not
+// an open end of the polyline. Fluid and boundary then form one unbroken lattice, so the fluid next to a wall has the
+// number density of the bulk. Normal and depth are those of the nearest face point (the bisecting direction behind a
+// corner); layer 0 (the wall layer) is everything less than one row spacing deep.
+inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& face, bool fluid_on_left, double dp,
+                                                   double re, LatticeKind kind) {
+  const std::size_t nv = face.size();
+  if (nv < 2) throw std::invalid_argument("a wall needs at least two vertices");
+  for (std::size_t s = 0; s + 1 < nv; ++s)
+    if ((face[s + 1] - face[s]).norm() <= 0.0) throw std::invalid_argument("a wall has two equal consecutive vertices");
+  Vec<2> lo = face[0], hi = face[0];
+  for (const auto& q : face) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  lo -= Vec<2>::Constant(re);
+  hi += Vec<2>::Constant(re);
+  const double eps = 1e-9 * dp, row = row_spacing(kind, dp);
+  std::vector<BoundaryPoint> out;
+  for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<2>& p) {
+    double best = std::numeric_limits<double>::infinity();
+    Vec<2> nearest = Vec<2>::Zero(), inward = Vec<2>::Zero();
+    bool open_end = false;
+    for (std::size_t s = 0; s + 1 < nv; ++s) {
+      const Vec<2> d = face[s + 1] - face[s];
+      const Vec<2> left = Vec<2>(-d[1], d[0]).normalized();
+      const double t = std::clamp((p - face[s]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      const Vec<2> c = face[s] + t * d;
+      const double dist = (p - c).norm();
+      if (dist < best - eps) {
+        best = dist;
+        nearest = c;
+        inward = fluid_on_left ? left : Vec<2>(-left);
+        open_end = (t == 0.0 && s == 0) || (t == 1.0 && s + 2 == nv);
+      }
+    }
+    if (open_end || best > re + eps || (p - nearest).dot(inward) > eps) return;
+    // Behind a corner the nearest face point is the vertex: the normal points from the particle to it.
+    const bool corner = best > eps && (nearest - p).normalized().dot(inward) < 1.0 - 1e-9;
+    const Vec<2> normal = corner ? Vec<2>((nearest - p).normalized()) : inward;
+    out.push_back({p, normal, best, best < row - eps ? 0 : 1});
+  });
   return out;
 }
 

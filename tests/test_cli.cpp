@@ -203,7 +203,7 @@ TEST(Cli, InterruptWritesFinalSnapshot) {
 }
 
 // The same scene with 1 and 2 threads: every output file identical byte for byte. The still tank has enough
-// particles (5798) for its loops to run in parallel (fluid/parallel.hpp runs short loops on one thread).
+// particles (5558) for its loops to run in parallel (fluid/parallel.hpp runs short loops on one thread).
 TEST(Cli, OneAndTwoThreadsGiveIdenticalFiles) {
   const std::string scene = (source_dir() / "cases/hydrostatic_2d.yaml").string();
   std::vector<fs::path> outs;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fluid/kernel.hpp"
+#include "fluid/lattice.hpp"
 
 namespace slide {
 namespace {
@@ -57,6 +58,43 @@ void expect_continuum_limit() {
   EXPECT_LT(previous_error, 2e-3);
   const LatticeConstants fine = lattice_constants<D>(re / 32.0, re);
   EXPECT_NEAR(fine.lambda, continuum_lambda<D>(re), 0.01 * continuum_lambda<D>(re));
+  EXPECT_NEAR(fine.kappa, 1.0, 0.01);
+}
+
+// The hexagonal lattice with one particle per dp^2 has nearest spacing a = 1.0746 dp; with re = 2.1 dp its
+// neighbours within re are 6 at a and 6 at sqrt(3) a = 1.861 dp (the next, 6 at 2 a = 2.149 dp, lie beyond).
+TEST(Kernel, HexagonalLatticeConstantsByHand) {
+  const double dp = 0.01, re = 2.1 * dp;
+  const double a = nearest_spacing(LatticeKind::hexagonal, dp), b = std::sqrt(3.0) * a;
+  EXPECT_NEAR(a * row_spacing(LatticeKind::hexagonal, dp), dp * dp, 1e-18);  // one particle per dp^2
+  ASSERT_GT(2 * a, re);
+  const double w1 = kernel_weight(a, re), w2 = kernel_weight(b, re);
+  const double n0 = 6 * (w1 + w2);
+  const LatticeConstants c = lattice_constants<2>(dp, re, LatticeKind::hexagonal);
+  EXPECT_NEAR(c.n0, n0, 1e-14);
+  EXPECT_NEAR(c.lambda, 6 * (w1 * a * a + w2 * b * b) / n0, 1e-18);
+  EXPECT_NEAR(c.kappa, 6 * (-kernel_derivative(a, re) * a - kernel_derivative(b, re) * b) / (2 * n0), 1e-12);
+  // The square lattice is what the two-argument form gives.
+  const LatticeConstants s = lattice_constants<2>(dp, re, LatticeKind::square), s2 = lattice_constants<2>(dp, re);
+  EXPECT_EQ(s.n0, s2.n0);
+  EXPECT_EQ(s.lambda, s2.lambda);
+  EXPECT_THROW(lattice_constants<3>(dp, re, LatticeKind::hexagonal), std::invalid_argument);
+}
+
+// Both lattices hold one particle per dp^2, so both tend to the same continuum values.
+TEST(Kernel, HexagonalContinuumLimit) {
+  const double re = 1.0;
+  double previous_error = 1e9;
+  for (double ratio : {4.0, 8.0, 16.0, 32.0}) {
+    const double dp = re / ratio;
+    const LatticeConstants c = lattice_constants<2>(dp, re, LatticeKind::hexagonal);
+    const double error = std::abs((c.n0 + 1.0) * dp * dp - kernel_volume_integral<2>(re)) / kernel_volume_integral<2>(re);
+    EXPECT_LT(error, previous_error) << "ratio " << ratio;
+    previous_error = error;
+  }
+  EXPECT_LT(previous_error, 2e-3);
+  const LatticeConstants fine = lattice_constants<2>(re / 32.0, re, LatticeKind::hexagonal);
+  EXPECT_NEAR(fine.lambda, continuum_lambda<2>(re), 0.01 * continuum_lambda<2>(re));
   EXPECT_NEAR(fine.kappa, 1.0, 0.01);
 }
 

@@ -7,6 +7,7 @@
 #include "fluid/equation_of_state.hpp"
 #include "fluid/gradient.hpp"
 #include "fluid/laplacian.hpp"
+#include "fluid/lattice.hpp"
 #include "fluid/number_density.hpp"
 
 namespace slide {
@@ -21,22 +22,25 @@ struct Lattice {
   LatticeConstants constants;
   std::size_t centre = 0;
 
-  Lattice() {
+  // The square (cubic) lattice, or in 2-D the hexagonal one (fluid/lattice.hpp).
+  explicit Lattice(LatticeKind kind = LatticeKind::square) {
     const int kmax = D == 3 ? side : 1;
     for (int k = 0; k < kmax; ++k)
       for (int j = 0; j < side; ++j)
         for (int i = 0; i < side; ++i) {
           Vec<D> x;
-          x[0] = i * dp;
-          x[1] = j * dp;
-          if constexpr (D == 3) x[2] = k * dp;
+          if constexpr (D == 2) {
+            x = lattice_point(kind, dp, i, j);
+          } else {
+            x = Vec<D>(i * dp, j * dp, k * dp);
+          }
           const std::size_t n = particles.add(x, Kind::fluid, 0, 1000.0, 1e-3);
           if (i == side / 2 && j == side / 2 && (D == 2 || k == side / 2)) centre = n;
         }
-    NeighborGrid<D> grid(Vec<D>::Constant(-dp), Vec<D>::Constant(side * dp), re);
+    NeighborGrid<D> grid(Vec<D>::Constant(-dp), Vec<D>::Constant((side + 2) * dp), re);
     grid.bin(particles.position);
     build_neighbor_list(grid, particles.position, re, list);
-    constants = lattice_constants<D>(dp, re);
+    constants = lattice_constants<D>(dp, re, kind);
   }
   // Particles whose whole kernel support lies inside the lattice.
   bool interior(std::size_t i) const {
@@ -47,8 +51,8 @@ struct Lattice {
 };
 
 template <int D>
-void expect_number_density_is_n0() {
-  Lattice<D> L;
+void expect_number_density_is_n0(LatticeKind kind = LatticeKind::square) {
+  Lattice<D> L(kind);
   std::vector<double> n;
   compute_number_density<D>(L.particles.position, L.list, L.re, n);
   for (std::size_t i = 0; i < n.size(); ++i)
@@ -58,10 +62,11 @@ void expect_number_density_is_n0() {
 }
 TEST(Operators, NumberDensityIsN0OnLattice2D) { expect_number_density_is_n0<2>(); }
 TEST(Operators, NumberDensityIsN0OnLattice3D) { expect_number_density_is_n0<3>(); }
+TEST(Operators, NumberDensityIsN0OnHexagonalLattice) { expect_number_density_is_n0<2>(LatticeKind::hexagonal); }
 
 template <int D>
-void expect_gradient_of_linear_field_exact() {
-  Lattice<D> L;
+void expect_gradient_of_linear_field_exact(LatticeKind kind = LatticeKind::square) {
+  Lattice<D> L(kind);
   Vec<D> slope;
   for (int k = 0; k < D; ++k) slope[k] = 1.5 + 2.0 * k;
   for (std::size_t i = 0; i < L.particles.size(); ++i) L.particles.pressure[i] = 300.0 + slope.dot(L.particles.position[i]);
@@ -79,10 +84,14 @@ void expect_gradient_of_linear_field_exact() {
 }
 TEST(Operators, GradientOfLinearFieldExact2D) { expect_gradient_of_linear_field_exact<2>(); }
 TEST(Operators, GradientOfLinearFieldExact3D) { expect_gradient_of_linear_field_exact<3>(); }
+// The hexagonal lattice's second moments are isotropic too, so every model is exact on it with its own n0 and kappa.
+TEST(Operators, GradientOfLinearFieldExactHexagonal) {
+  expect_gradient_of_linear_field_exact<2>(LatticeKind::hexagonal);
+}
 
 template <int D>
-void expect_laplacian_of_quadratic_field_exact() {
-  Lattice<D> L;
+void expect_laplacian_of_quadratic_field_exact(LatticeKind kind = LatticeKind::square) {
+  Lattice<D> L(kind);
   // phi = sum_k c_k x_k^2 + x_0 x_1: Laplacian 2 sum c_k.
   std::vector<double> phi(L.particles.size());
   double exact = 0.0;
@@ -105,6 +114,9 @@ void expect_laplacian_of_quadratic_field_exact() {
 }
 TEST(Operators, LaplacianOfQuadraticFieldExact2D) { expect_laplacian_of_quadratic_field_exact<2>(); }
 TEST(Operators, LaplacianOfQuadraticFieldExact3D) { expect_laplacian_of_quadratic_field_exact<3>(); }
+TEST(Operators, LaplacianOfQuadraticFieldExactHexagonal) {
+  expect_laplacian_of_quadratic_field_exact<2>(LatticeKind::hexagonal);
+}
 
 TEST(EquationOfState, SeedEquation7AndInverse) {
   const EquationOfState eos(2.0, 20.0, 7.0);

@@ -14,10 +14,20 @@ TEST(Scene, SchemaDocumentIsCurrent) {
 }
 
 TEST(Scene, ShippedScenesBuild) {
-  auto tank = load_shipped_scene("hydrostatic_2d.yaml", {"method.initial_state=hydrostatic"});
-  EXPECT_EQ(tank->fluid_count, 5000u);  // 1 m x 0.5 m at dp = 0.01 m
-  EXPECT_NEAR(tank->simulation->options.sound_speed, 10.0 * std::sqrt(9.81 * 0.5), 1e-9);
-  EXPECT_TRUE(tank->equilibrium.has_value());
+  auto square_tank = load_shipped_scene("hydrostatic_2d.yaml", {"lattice=square", "method.wall_pressure=mirror",
+                                                                 "method.initial_state=hydrostatic"});
+  EXPECT_EQ(square_tank->fluid_count, 5000u);  // 1 m x 0.5 m at dp = 0.01 m
+  EXPECT_NEAR(square_tank->simulation->options.sound_speed, 10.0 * std::sqrt(9.81 * 0.5), 1e-9);
+  EXPECT_TRUE(square_tank->equilibrium.has_value());
+  // The shipped tank is hexagonal: rows h = 0.9306 dp apart with centres below the level (54 rows, 0.5025 m of
+  // water), 93 points in front of the side walls in every row (x = 0.54 dp .. 999.4 mm in even rows, 1.07 dp ..
+  // 993.8 mm in odd ones; the odd rows' point at x = 0 is the left wall's).
+  auto tank = load_shipped_scene("hydrostatic_2d.yaml", {"method.initial_state=lattice"});
+  const double h = row_spacing(LatticeKind::hexagonal, 0.01);
+  EXPECT_EQ(tank->fluid_count, 54u * 93u);
+  EXPECT_NEAR(tank->deepest_water, 54 * h, 1e-12);
+  EXPECT_NEAR(tank->simulation->options.sound_speed, 10.0 * std::sqrt(9.81 * 54 * h), 1e-9);
+  EXPECT_EQ(tank->simulation->options.lattice, LatticeKind::hexagonal);
   auto bench = load_shipped_scene("dam_break_bench_2d.yaml");
   EXPECT_EQ(bench->fluid_count, 20000u);
   EXPECT_NEAR(bench->deepest_water, 2.0, 1e-9);
@@ -62,6 +72,46 @@ fluid:
   } catch (const cases::SceneError& e) {
     EXPECT_EQ(e.key_path, "fluid.regions[0].phase");
   }
+}
+
+// What the hexagonal lattice cannot do yet is refused, naming the key, before anything runs.
+TEST(Scene, HexagonalLatticeRefusesWhatItCannotDo) {
+  const auto dir = fresh_directory("hexagonal");
+  const std::string tank = R"(particle_spacing: 0.1
+end_time: 1
+lattice: hexagonal
+fluid:
+  phases: [{name: water}]
+  regions: [{type: below_level, level: 0.5}]
+walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
+)";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"method: {initial_state: lattice}\n", "method.wall_pressure"},  // mirror is the default
+      {"method: {wall_pressure: extrapolated}\n", "method.initial_state"},  // hydrostatic is the default
+      {"method: {wall_pressure: extrapolated, initial_state: lattice}\n"
+       "bodies: [{name: b, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.2]}, density: 500}]\n",
+       "bodies"},
+  };
+  for (const auto& [extra, key] : cases) {
+    write_file(dir / "s.yaml", tank + extra);
+    try {
+      cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+      ADD_FAILURE() << "expected a SceneError for " << key;
+    } catch (const cases::SceneError& e) {
+      EXPECT_EQ(e.key_path, key);
+    }
+  }
+  write_file(dir / "s.yaml", tank + "method: {wall_pressure: extrapolated, initial_state: lattice}\n");
+  try {
+    cases::build_scene(cases::load_scene(dir / "s.yaml", {"walls[0].layers=3"}), "s");
+    ADD_FAILURE() << "expected a SceneError for walls[0].layers";
+  } catch (const cases::SceneError& e) {
+    EXPECT_EQ(e.key_path, "walls[0].layers");
+  }
+  // Accepted as it stands: 5 rows (centres (j + 1/2) 0.9306 dp below 0.5 m) of 9 points (x = (i + 1/2) a in even
+  // rows, (i + 1) a in odd ones, a = 0.10746 m, below x = 1 m).
+  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  EXPECT_EQ(scene->fluid_count, 5u * 9u);
 }
 
 }  // namespace

@@ -64,5 +64,54 @@ TEST(Walls, RejectsDegenerateInput) {
   EXPECT_THROW(polyline_boundary({Vec<2>(0, 0), Vec<2>(0, 0)}, true, 0.1, 1), std::invalid_argument);
 }
 
+// On the hexagonal lattice the walls are the lattice points on or behind the face, to the depth re, against a brute-force
+// classification of a U-shaped tank; with the water (every lattice point in front) they form one unbroken lattice.
+TEST(Walls, HexagonalWallsAreTheLatticeBehindTheFace) {
+  const double dp = 0.1, re = 2.1 * dp, width = 1.0, height = 0.8;
+  const LatticeKind hex = LatticeKind::hexagonal;
+  const double a = nearest_spacing(hex, dp), h = row_spacing(hex, dp);
+  const auto pts = lattice_boundary({Vec<2>(0, height), Vec<2>(0, 0), Vec<2>(width, 0), Vec<2>(width, height)}, true,
+                                    dp, re, hex);
+  // Brute force: distance behind the tank's faces (negative in front), for points no higher than the walls' tops.
+  auto behind = [&](const Vec<2>& p) {
+    const double dx = std::max(-p[0], p[0] - width), dy = -p[1];
+    if (dx <= 0 && dy <= 0) return -std::min(-dx, -dy);
+    return std::hypot(std::max(dx, 0.0), std::max(dy, 0.0));
+  };
+  std::set<std::pair<long, long>> expected;
+  for_each_lattice_point(hex, dp, Vec<2>(-1, -1), Vec<2>(2, 2), [&](const Vec<2>& p) {
+    const double d = behind(p);
+    if (d >= -1e-12 && d <= re + 1e-12 && p[1] <= height + 1e-12)
+      expected.insert({std::lround(p[0] / dp * 1e6), std::lround(p[1] / dp * 1e6)});
+  });
+  std::set<std::pair<long, long>> got;
+  for (const auto& b : pts) {
+    EXPECT_TRUE(got.insert({std::lround(b.position[0] / dp * 1e6), std::lround(b.position[1] / dp * 1e6)}).second)
+        << "duplicate at " << b.position.transpose();
+    EXPECT_NEAR(b.depth, behind(b.position), 1e-12) << b.position.transpose();
+    EXPECT_NEAR(b.normal.norm(), 1.0, 1e-12);
+    EXPECT_EQ(b.layer, b.depth < h - 1e-9 * dp ? 0 : 1);
+    // Beside a side wall or under the floor the normal is the face's; behind a corner it points at the vertex.
+    if (b.position[1] > 0 && b.position[0] < 0) {
+      EXPECT_NEAR(b.normal[0], 1.0, 1e-12);
+    }
+    if (b.position[0] > 0 && b.position[0] < width && b.position[1] < 0) {
+      EXPECT_NEAR(b.normal[1], 1.0, 1e-12);
+    }
+    if (b.position[0] < 0 && b.position[1] < 0) {
+      EXPECT_NEAR((b.position + b.depth * b.normal).norm(), 0.0, 1e-12);
+    }
+  }
+  EXPECT_EQ(got, expected);
+  // Water and walls together: no two points closer than the lattice's nearest spacing.
+  std::vector<Vec<2>> all;
+  for (const auto& b : pts) all.push_back(b.position);
+  for_each_lattice_point(hex, dp, Vec<2>(0, 0), Vec<2>(width, 0.5), [&](const Vec<2>& p) {
+    if (behind(p) < 0 && p[1] < 0.5) all.push_back(p);
+  });
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j) ASSERT_GT((all[i] - all[j]).norm(), a * (1 - 1e-9));
+}
+
 }  // namespace
 }  // namespace slide

@@ -124,6 +124,7 @@ int check_command(const RunArguments& args) {
       "case            {}\n"
       "particles       {} total: {} fluid, {} wall, {} dummy\n"
       "spacing dp      {} m, kernel radius re = {} dp = {} m\n"
+      "lattice         {} (nearest spacing {:.6g} dp)\n"
       "n0, lambda      {:.9g}, {:.9g} m^2 (lambda / dp^2 = {:.6g})\n"
       "sound speed c0  {:.6g} m/s ({})\n"
       "gradient model  {}\n"
@@ -133,7 +134,7 @@ int check_command(const RunArguments& args) {
       "memory          about {:.1f} MB\n"
       "{}",
       scene->name, sim.particles.size(), scene->fluid_count, scene->wall_count, scene->dummy_count, o.dp,
-      o.re_over_dp, sim.re(), sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
+      o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp, sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene->sound_speed_source, to_string(o.gradient), dt, time_step_limit_names[static_cast<int>(limit)],
       scene->end_time, scene->end_time / dt, o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1],
       memory_estimate_mb(sim),
