@@ -527,7 +527,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
       throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
                                                "compresses it); the column-wise hydrostatic start needs lattice: square");
     if (r["bodies"].size() > 0)
-      throw SceneError("bodies", "bodies need lattice: square for now (their boundary particles follow the outline)");
+      throw SceneError("bodies", "bodies need lattice: square: cut from the hexagonal lattice, a body's faces are "
+                                 "resolved only to a row spacing (a floating block's draft came out 6.6 % deep)");
     for (std::size_t w = 0; w < r["walls"].size(); ++w)
       if (r["walls"][w]["layers"].as<long>() != 0)
         throw SceneError(fmt::format("walls[{}].layers", w),

@@ -94,7 +94,7 @@ inline std::vector<BoundaryPoint> polyline_boundary(const std::vector<Vec<2>>& f
 
 // Boundary particles on the fluid's own lattice (used with the hexagonal lattice, whose rows cannot follow a face):
 // every lattice point that lies on or behind the face, no deeper than re, and whose nearest point on the face is not
-// an open end of the polyline. Fluid and boundary then form one unbroken lattice, so the fluid next to a wall has the
+// an open end of the polyline (a closed polyline, such as a body's outline, has none). Fluid and boundary then form one unbroken lattice, so the fluid next to a wall has the
 // number density of the bulk. Normal and depth are those of the nearest face point (the bisecting direction behind a
 // corner); layer 0 (the wall layer) is everything less than one row spacing deep.
 inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& face, bool fluid_on_left, double dp,
@@ -108,6 +108,8 @@ inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& fa
   lo -= Vec<2>::Constant(re);
   hi += Vec<2>::Constant(re);
   const double eps = 1e-9 * dp, row = row_spacing(kind, dp);
+  // A closed face (last vertex equal to the first, a body's outline) has no open ends.
+  const bool closed = nv >= 4 && (face.front() - face.back()).norm() <= 1e-12 * (1.0 + face.front().norm());
   std::vector<BoundaryPoint> out;
   for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<2>& p) {
     double best = std::numeric_limits<double>::infinity();
@@ -123,7 +125,7 @@ inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& fa
         best = dist;
         nearest = c;
         inward = fluid_on_left ? left : Vec<2>(-left);
-        open_end = (t == 0.0 && s == 0) || (t == 1.0 && s + 2 == nv);
+        open_end = !closed && ((t == 0.0 && s == 0) || (t == 1.0 && s + 2 == nv));
       }
     }
     if (open_end || best > re + eps || (p - nearest).dot(inward) > eps) return;

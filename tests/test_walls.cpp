@@ -113,5 +113,26 @@ TEST(Walls, HexagonalWallsAreTheLatticeBehindTheFace) {
     for (std::size_t j = i + 1; j < all.size(); ++j) ASSERT_GT((all[i] - all[j]).norm(), a * (1 - 1e-9));
 }
 
+// A closed outline (a body's shape) has no open ends: every lattice point on or inside it to the depth re.
+TEST(Walls, HexagonalClosedOutlineHasNoOpenEnds) {
+  const double dp = 0.1, re = 2.1 * dp;
+  const LatticeKind hex = LatticeKind::hexagonal;
+  const Vec<2> lo(0.2, 0.3), hi(1.4, 1.0);
+  const auto pts = lattice_boundary({lo, Vec<2>(hi[0], lo[1]), hi, Vec<2>(lo[0], hi[1]), lo}, false, dp, re, hex);
+  std::size_t expected = 0;
+  for_each_lattice_point(hex, dp, lo, hi, [&](const Vec<2>& p) {
+    const double inside = std::min({p[0] - lo[0], hi[0] - p[0], p[1] - lo[1], hi[1] - p[1]});
+    if (inside >= -1e-12 && inside <= re + 1e-12) ++expected;
+  });
+  EXPECT_EQ(pts.size(), expected);
+  for (const auto& b : pts) {
+    const double inside = std::min({b.position[0] - lo[0], hi[0] - b.position[0], b.position[1] - lo[1],
+                                    hi[1] - b.position[1]});
+    EXPECT_NEAR(b.depth, inside, 1e-12);
+    // The normal points out of the body, into the fluid.
+    EXPECT_GT((b.position + 0.5 * dp * b.normal - 0.5 * (lo + hi)).norm(), (b.position - 0.5 * (lo + hi)).norm());
+  }
+}
+
 }  // namespace
 }  // namespace slide
