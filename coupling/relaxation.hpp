@@ -6,7 +6,8 @@
 // particles can lower the scheme's energy by shearing towards a denser-looking arrangement (the number density of
 // a sheared lattice is a few per cent below the square one's at the same particle density), and a still tank
 // started from it stirs itself to speeds of tens of per cent of sqrt(g H) (issue 3's closing note). Settling with
-// damping releases that energy before t = 0. The same is done in SPH practice ("settling runs").
+// damping releases that energy before t = 0. The same is done in SPH practice ("settling runs"). On the hexagonal
+// lattice (fluid/lattice.hpp), a stable packing, settling only compresses the water under its weight.
 // Bodies are left out while settling: their boundary particles stay where they are, like walls.
 #include "coupling/simulation.hpp"
 
