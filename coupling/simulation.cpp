@@ -101,9 +101,9 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
   // Moving boundaries count in the CFL limit: a slide faster than the water around it must not cross more than a
   // fraction of a spacing per step either (fixed walls have zero velocity).
   const double u_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) { return P.velocity[i].squaredNorm(); }));
-  const double a_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) {
-    return P.kind[i] == Kind::fluid ? P.acceleration[i].squaredNorm() : 0.0;
-  }));
+  // So do they in the force limit: body particles carry their body's rigid acceleration (a slide hitting the slope
+  // or the water decelerates hard), fixed walls zero.
+  const double a_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) { return P.acceleration[i].squaredNorm(); }));
   const double nu_max = parallel_max(P.size(), 0.0, [&](std::size_t i) {
     return P.kind[i] == Kind::fluid ? P.viscosity[i] / P.density[i] : 0.0;
   });

@@ -115,6 +115,35 @@ bodies:
   EXPECT_LT(dt, 0.5 * at_rest);
 }
 
+// A body decelerating hard limits the time step through the force limit: its particles' rigid acceleration counts.
+TEST(RigidCoupling, AcceleratingBodyEntersTheForceLimit) {
+  const auto dir = fresh_directory("force_body");
+  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
+end_time: 1
+gravity: [0, 0]
+method: {sound_speed: 10, initial_state: lattice}
+fluid:
+  phases: [{name: water}]
+  regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.1]}]
+bodies:
+  - name: block
+    shape: {type: box, center: [0.2, 0.2], size: [0.1, 0.05]}
+    density: 800
+)");
+  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto& sim = *scene->simulation;
+  EXPECT_NE(sim.allowed_time_step().second, TimeStepLimit::force);  // at rest, no gravity: no acceleration at all
+  // 2 m/s lost in 1e-5 s: 2e5 m/s^2, whose force limit 0.25 sqrt(dp / a) = 5.6e-5 s is below the CFL limit.
+  const double dv = 2.0, interval = 1e-5;
+  sim.bodies->world.set_velocity(0, rigid::Vec2(dv, 0.0), 0.0);
+  sim.bodies->place_particles(sim.particles, 0.0);
+  sim.bodies->world.set_velocity(0, rigid::Vec2(0.0, 0.0), 0.0);
+  sim.bodies->place_particles(sim.particles, interval);
+  const auto [dt, limit] = sim.allowed_time_step();
+  EXPECT_EQ(limit, TimeStepLimit::force);
+  EXPECT_NEAR(dt, sim.options.force_number * std::sqrt(sim.options.dp / (dv / interval)), 1e-9 * dt);
+}
+
 // Water around a free body, no gravity and no walls: the body is pushed through the water, and the total momentum
 // of water and body stays what it was to round-off, step after step.
 TEST(RigidCoupling, FluidAndBodyConserveMomentumTogether) {
