@@ -111,12 +111,15 @@ TEST(HeinrichWedge, PrescribedReplayOfTheFreeRunGivesTheSameWaves) {
   for (std::size_t k = 0; k < xf.size(); ++k) EXPECT_NEAR(xr[k], xf[k], 1e-3);
   for (const std::string gauge : {"x2.5", "x3.0"}) {
     const auto a = free_run.gauges.numbers(gauge), b = replay.gauges.numbers(gauge);
+    // Elevation above the still level that the gauge itself reads at t = 0 (the settled water's edge stands about
+    // half a spacing below the nominal 1 m at this resolution: coupling/free_surface_gauge.hpp).
     double crest_a = -1e9, crest_b = -1e9, rms_a = 0, rms_b = 0;
     for (std::size_t k = 0; k < a.size(); ++k) {
-      crest_a = std::max(crest_a, a[k] - 1.0);
-      crest_b = std::max(crest_b, b[k] - 1.0);
-      rms_a += (a[k] - 1.0) * (a[k] - 1.0);
-      rms_b += (b[k] - 1.0) * (b[k] - 1.0);
+      const double ea = a[k] - a.front(), eb = b[k] - b.front();
+      crest_a = std::max(crest_a, ea);
+      crest_b = std::max(crest_b, eb);
+      rms_a += ea * ea;
+      rms_b += eb * eb;
     }
     rms_a = std::sqrt(rms_a / a.size());
     rms_b = std::sqrt(rms_b / b.size());
