@@ -62,11 +62,11 @@ TEST(FloatingBlock, FluidForceBalancesWeight) {
 
 // The issue's draft target. Not met: against the water's edge at the gauges the block floats 3.9 mm high (-7.9 %).
 // The pressure field of the settled square-lattice water reads as if the surface stood about half a spacing above
-// that edge (floor pressure / rho g + y: 0.3023 m; edge: 0.2963 m), which is the free-surface condition's offset:
-// p = 0 is imposed at the surface particles' centres, half a spacing below the edge, so the second row must carry
-// about 2 rho g dp, not 1.5 rho g dp, to hold the first one up against the (p_i + p_j) gradient. The block floats on
-// that pressure. (The gauge's earlier threshold, n0 / 2, read the edge 0.3 dp high and hid most of it: -1.9 %.)
-// Kept, disabled, so that it stays visible; issue 4's closing note has the figures.
+// that edge (floor pressure / rho g + y: 0.3023 m; edge: 0.2963 m), and the block floats on that pressure. Giving the
+// surface particles the hydrostatic pressure of their centres' depth instead of 0 made that offset larger, not
+// smaller (issue 4's closing note): where it comes from in the (p_i + p_j) force balance of the top rows is still
+// open. (The gauge's earlier threshold, n0 / 2, read the edge 0.3 dp high and hid most of it: -1.9 %.)
+// Kept, disabled, so that it stays visible.
 TEST(FloatingBlock, DISABLED_DraftWithinOnePercent) {
   const FloatResult r = run_block({}, 1.0);
   EXPECT_NEAR(r.draft, 0.05, 0.0005);
