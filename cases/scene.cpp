@@ -711,9 +711,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
 
   // Sound speed and hydrostatic start.
   const double g = -opt.gravity[1];
-  scene->deepest_water =
-      hexagonal ? deepest_water<2>(P, dp, 2.0 * row_spacing(opt.lattice, dp))
-                : compress_hydrostatically<2>(P, dp, re, EquationOfState(1.0, 1.0, opt.gamma), g, false, {});
+  // A lattice column's particles are dp apart on the square lattice, two rows apart on the hexagonal one.
+  scene->deepest_water = deepest_water<2>(P, dp, hexagonal ? 2.0 * row_spacing(opt.lattice, dp) : dp);
   const double c0_key = m["sound_speed"].as<double>();
   if (c0_key > 0.0) {
     opt.sound_speed = c0_key;

@@ -88,9 +88,9 @@ TEST(RigidCoupling, BodyParticlesCarryTheRigidAcceleration) {
   }
 }
 
-// A body faster than sound in the water still limits the time step: the CFL limit counts boundary particles' speeds.
-TEST(RigidCoupling, MovingBodyEntersTheCflLimit) {
-  const auto dir = fresh_directory("cfl_body");
+// A block held above a slab of water, no gravity: for the time-step limits of moving bodies.
+std::unique_ptr<cases::Scene> block_above_still_water(const std::string& name) {
+  const auto dir = fresh_directory(name);
   write_file(dir / "s.yaml", R"(particle_spacing: 0.01
 end_time: 1
 gravity: [0, 0]
@@ -103,7 +103,12 @@ bodies:
     shape: {type: box, center: [0.2, 0.2], size: [0.1, 0.05]}
     density: 800
 )");
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+}
+
+// A body faster than sound in the water still limits the time step: the CFL limit counts boundary particles' speeds.
+TEST(RigidCoupling, MovingBodyEntersTheCflLimit) {
+  auto scene = block_above_still_water("cfl_body");
   auto& sim = *scene->simulation;
   const double at_rest = sim.allowed_time_step().first;
   const double speed = 40.0;
@@ -117,20 +122,7 @@ bodies:
 
 // A body decelerating hard limits the time step through the force limit: its particles' rigid acceleration counts.
 TEST(RigidCoupling, AcceleratingBodyEntersTheForceLimit) {
-  const auto dir = fresh_directory("force_body");
-  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
-end_time: 1
-gravity: [0, 0]
-method: {sound_speed: 10, initial_state: lattice}
-fluid:
-  phases: [{name: water}]
-  regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.1]}]
-bodies:
-  - name: block
-    shape: {type: box, center: [0.2, 0.2], size: [0.1, 0.05]}
-    density: 800
-)");
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto scene = block_above_still_water("force_body");
   auto& sim = *scene->simulation;
   EXPECT_NE(sim.allowed_time_step().second, TimeStepLimit::force);  // at rest, no gravity: no acceleration at all
   // 2 m/s lost in 1e-5 s: 2e5 m/s^2, whose force limit 0.25 sqrt(dp / a) = 5.6e-5 s is below the CFL limit.
