@@ -75,6 +75,10 @@ Schema make_schema() {
                             "the law in `prescribed`", {"free", "prescribed"}, "free")},
        {"locked", S::list("components held fixed (free motion)", S::choice("component", {"x", "y", "rotation"}, std::nullopt))},
        {"release_time", S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
+       {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
+                                     "put while the water settles; free lets a free body float with the water under "
+                                     "the same damping, so that t = 0 finds it at rest where the water holds it (a "
+                                     "floating body's equilibrium)", {"held", "free"}, "held")},
        {"prescribed", S::map("prescribed motion (motion: prescribed)",
                              {{"type", S::choice("series: a CSV time series (time,x,y,angle[,vx,vy,omega] of the centre of mass, as in "
                                                  "bodies.csv) interpolated by cubic Hermite; ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) "
@@ -180,7 +184,8 @@ Schema make_schema() {
                              "hexagonal (nearest spacing 1.0746 dp), the stable packing that still water needs to "
                              "stay at rest; with hexagonal, walls are cut from the same lattice (layers unused), "
                              "the wall pressure must be extrapolated or number_density, the initial state lattice or "
-                             "settled, and there can be no bodies",
+                             "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
+                             "lies dp/2 below the lowest point of the first body",
                              {"square", "hexagonal"}, "square")},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
@@ -311,6 +316,26 @@ rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, co
   return rigid::PrescribedMotion::from_samples(std::move(samples), has_velocity);
 }
 
+// A body's outline from its shape, counter-clockwise in world coordinates at t = 0; it must be convex.
+std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& path) {
+  std::vector<rigid::Vec2> outline;
+  const YAML::Node sh = bn["shape"];
+  if (sh["type"].as<std::string>() == "box") {
+    const Vec<2> c = vec2(sh["center"]), size = vec2(sh["size"]);
+    if (!(size[0] > 0 && size[1] > 0)) throw SceneError(path + ".shape.size", "width and height must be positive");
+    const double a = sh["angle"].as<double>() * M_PI / 180.0, ca = std::cos(a), sa = std::sin(a);
+    for (const auto& corner : {Vec<2>(-0.5, -0.5), Vec<2>(0.5, -0.5), Vec<2>(0.5, 0.5), Vec<2>(-0.5, 0.5)}) {
+      const Vec<2> l(corner[0] * size[0], corner[1] * size[1]);
+      outline.push_back(r2(c + Vec<2>(ca * l[0] - sa * l[1], sa * l[0] + ca * l[1])));
+    }
+  } else {
+    for (const auto& p : points_of(sh["points"])) outline.push_back(r2(p));
+  }
+  outline = rigid::counter_clockwise(outline);
+  if (!rigid::is_convex_ccw(outline)) throw SceneError(path + ".shape", "the outline must be a convex polygon");
+  return outline;
+}
+
 BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene_dir,
                          const std::vector<FaceSegment>& faces, const FluidOptions<2>& opt, Particles<2>& P,
                          std::vector<std::string>& boundary_owner, std::vector<BodyReport>& reports) {
@@ -330,22 +355,7 @@ BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene
     const std::string name = bn["name"].as<std::string>();
     if (names.count(name)) throw SceneError(path + ".name", "duplicate body name \"" + name + "\"");
     names[name] = k;
-    // Outline.
-    std::vector<rigid::Vec2> outline;
-    const YAML::Node sh = bn["shape"];
-    if (sh["type"].as<std::string>() == "box") {
-      const Vec<2> c = vec2(sh["center"]), size = vec2(sh["size"]);
-      if (!(size[0] > 0 && size[1] > 0)) throw SceneError(path + ".shape.size", "width and height must be positive");
-      const double a = sh["angle"].as<double>() * M_PI / 180.0, ca = std::cos(a), sa = std::sin(a);
-      for (const auto& corner : {Vec<2>(-0.5, -0.5), Vec<2>(0.5, -0.5), Vec<2>(0.5, 0.5), Vec<2>(-0.5, 0.5)}) {
-        const Vec<2> l(corner[0] * size[0], corner[1] * size[1]);
-        outline.push_back(r2(c + Vec<2>(ca * l[0] - sa * l[1], sa * l[0] + ca * l[1])));
-      }
-    } else {
-      for (const auto& p : points_of(sh["points"])) outline.push_back(r2(p));
-    }
-    outline = rigid::counter_clockwise(outline);
-    if (!rigid::is_convex_ccw(outline)) throw SceneError(path + ".shape", "the outline must be a convex polygon");
+    const std::vector<rigid::Vec2> outline = body_outline(bn, path);
     for (const auto& v : outline)
       if (!faces.empty() && signed_face_distance(faces, v2(v)) < -1e-6 * dp)
         throw SceneError(path + ".shape", fmt::format("vertex ({:.6g}, {:.6g}) lies behind a wall face", v[0], v[1]));
@@ -368,6 +378,16 @@ BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene
     BodyMotion motion;
     motion.release_time = bn["release_time"].as<double>();
     const std::string mode = bn["motion"].as<std::string>();
+    motion.free_while_settling = bn["during_settling"].as<std::string>() == "free";
+    if (motion.free_while_settling) {
+      if (mode != "free")
+        throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
+      if (motion.release_time > 0.0)
+        throw SceneError(path + ".during_settling", "free contradicts release_time > 0 (which holds the body)");
+      if (r["method"]["initial_state"].as<std::string>() != "settled")
+        throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
+                                                    "otherwise)");
+    }
     if (mode == "prescribed") {
       motion.mode = BodyMotion::Mode::prescribed;
       spec.kinematic = true;
@@ -441,6 +461,8 @@ BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene
     rep.mass = mass;
     rep.inertia = spec.inertia;
     rep.particles = P.size() - first;
+    rep.placed = c;
+    rep.free_while_settling = motion.free_while_settling;
     reports.push_back(rep);
     out.outlines.push_back(outline);
   }
@@ -526,9 +548,6 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     if (m["initial_state"].as<std::string>() == "hydrostatic")
       throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
                                                "compresses it); the column-wise hydrostatic start needs lattice: square");
-    if (r["bodies"].size() > 0)
-      throw SceneError("bodies", "bodies need lattice: square: cut from the hexagonal lattice, a body's faces are "
-                                 "resolved only to a row spacing (a floating block's draft came out 6.6 % deep)");
     for (std::size_t w = 0; w < r["walls"].size(); ++w)
       if (r["walls"][w]["layers"].as<long>() != 0)
         throw SceneError(fmt::format("walls[{}].layers", w),
@@ -574,6 +593,19 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     phase_props.emplace_back(ph["density"].as<double>(), ph["viscosity"].as<double>());
   }
 
+  // With bodies on the hexagonal lattice, the lattice is moved up or down (by less than half a row spacing) so that
+  // a row lies dp/2 below the lowest point of the first body, where the fluid fill puts its nearest water. Why: the
+  // lattice's rows are 0.93 dp apart and fixed, so water under a body would otherwise start up to a row spacing
+  // further off than dp/2; the water cannot close such a gap under a held body (at rest, particles on a lattice
+  // resist shear like a solid), and on release a block of water density sank 6.5 mm onto it (issue 4's note).
+  Vec<2> lattice_offset = Vec<2>::Zero();
+  if (hexagonal && r["bodies"].size() > 0) {
+    double lowest = inf;
+    for (const auto& v : body_outline(r["bodies"][0], "bodies[0]")) lowest = std::min(lowest, v[1]);
+    lattice_offset[1] = row_offset_to_meet(opt.lattice, dp, lowest - 0.5 * dp);
+  }
+  scene->lattice_offset = lattice_offset;
+
   // Walls first (regions of type below_level need their faces).
   std::vector<FaceSegment> faces;
   std::vector<std::string> boundary_owner;
@@ -585,7 +617,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     const int layers = layers_key == 0 ? boundary_layers(opt.re_over_dp) : static_cast<int>(layers_key);
     std::vector<BoundaryPoint> pts;
     try {
-      pts = hexagonal ? lattice_boundary(face, left, dp, opt.re_over_dp * dp, opt.lattice)
+      pts = hexagonal ? lattice_boundary(face, left, dp, opt.re_over_dp * dp, opt.lattice, lattice_offset)
                       : polyline_boundary(face, left, dp, layers);
     } catch (const std::invalid_argument& e) {
       throw SceneError(fmt::format("walls[{}].points", w), e.what());
@@ -682,7 +714,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
         P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase_props[ph].first, phase_props[ph].second);
         region_of_particle.push_back(k);
         ++added;
-      });
+      }, lattice_offset);
     if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", dp));
   }
 

@@ -52,6 +52,8 @@ struct BodyReport {
   double displaced_area = 0.0;   // below the still-water level, m^2
   double buoyancy_ratio = 0.0;   // rho_water g displaced / (m g); NaN without a still-water level
   std::size_t particles = 0;     // boundary particles
+  Vec<2> placed = Vec<2>::Zero();  // centre of mass where the scene puts it, m
+  bool free_while_settling = false;  // during_settling: free
 };
 
 struct Scene {
@@ -64,6 +66,7 @@ struct Scene {
   ProfileSpec profiles;
   OutputSpec output;
   double deepest_water = 0.0;      // m, nominal
+  Vec<2> lattice_offset = Vec<2>::Zero();  // m, how far the start lattice was moved (to meet a body's bottom)
   std::string sound_speed_source;  // how c0 was chosen
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used

@@ -1,5 +1,6 @@
 #include "coupling/relaxation.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "coupling/rigid_bodies.hpp"
@@ -13,8 +14,16 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   auto& P = sim.particles;
   std::vector<Vec<2>> start(P.size());
   for (std::size_t i = 0; i < P.size(); ++i) start[P.id[i]] = P.position[i];
+  // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
+  // bodies are detached and their particles stand still as walls.
   const std::shared_ptr<RigidBodies> bodies = std::move(sim.bodies);
-  sim.bodies = nullptr;
+  bool floating = false;
+  if (bodies)
+    for (const auto& m : bodies->motion) floating = floating || (m.mode == BodyMotion::Mode::free && m.free_while_settling);
+  if (floating) {
+    bodies->set_settling(true);
+    sim.bodies = bodies;
+  }
   const double saved_rate = sim.options.velocity_damping_rate;
   sim.options.velocity_damping_rate = damping_rate;
   while (sim.time < duration - 1e-12) {
@@ -23,6 +32,8 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
     if (auto bad = sim.step(dt, limit))
       throw std::runtime_error("settling went unstable at t = " + std::to_string(bad->time) + " s: " + bad->reason);
     out.largest_speed = std::max(out.largest_speed, sim.max_fluid_speed());
+    // The same damping as the fluid's (Simulation::step: u <- u exp(-rate dt)).
+    if (floating) bodies->damp_floating(std::exp(-damping_rate * dt));
   }
   out.steps = sim.step_count;
   out.residual_speed = sim.max_fluid_speed();
@@ -33,6 +44,10 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
     P.acceleration[i] = Vec<2>::Zero();
   }
   sim.options.velocity_damping_rate = saved_rate;
+  if (floating) {
+    bodies->set_settling(false);
+    bodies->take_mean_forces();  // the settling's forces are not the run's
+  }
   sim.bodies = bodies;
   sim.time = 0.0;
   sim.step_count = 0;

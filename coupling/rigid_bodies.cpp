@@ -26,7 +26,8 @@ int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const
 
 void RigidBodies::place_particles(Particles<2>& P, double time) {
   for (std::size_t b = 0; b < size(); ++b)
-    if (motion[b].mode == BodyMotion::Mode::prescribed) world.set_kinematic_state(int(b), motion[b].prescribed->at(time));
+    if (motion[b].mode == BodyMotion::Mode::prescribed)
+      world.set_kinematic_state(int(b), motion[b].prescribed->at(settling_ ? 0.0 : time));
   std::vector<rigid::PlanarState> s(size());
   std::vector<double> c(size()), sn(size());
   std::vector<Vec<2>> linear_acceleration(size(), Vec<2>::Zero());
@@ -125,11 +126,30 @@ void RigidBodies::add_collision_forces(const Particles<2>& P, const NeighborList
   });
 }
 
+void RigidBodies::set_settling(bool on) {
+  settling_ = on;
+  for (std::size_t b = 0; b < size(); ++b) {
+    const auto& m = motion[b];
+    if (m.mode != BodyMotion::Mode::free) continue;
+    world.set_held(int(b), on ? !m.free_while_settling : m.release_time > 0.0);
+    if (!on) world.set_velocity(int(b), rigid::Vec2::Zero(), 0.0);
+  }
+  placed_state_.clear();
+}
+
+void RigidBodies::damp_floating(double factor) {
+  for (std::size_t b = 0; b < size(); ++b) {
+    if (motion[b].mode != BodyMotion::Mode::free || !motion[b].free_while_settling) continue;
+    const auto s = world.state(int(b));
+    world.set_velocity(int(b), factor * s.velocity, factor * s.angular_velocity);
+  }
+}
+
 void RigidBodies::advance(double time_after, double dt) {
   for (std::size_t b = 0; b < size(); ++b) {
     const auto& f = pending_[b];
     if (motion[b].mode == BodyMotion::Mode::free) {
-      if (time_after > motion[b].release_time) world.set_held(int(b), false);
+      if (!settling_ && time_after > motion[b].release_time) world.set_held(int(b), false);
       world.apply_force(int(b), rigid::Vec2(f.total()[0], f.total()[1]), f.total_torque());
     }
     force[b] = f;

@@ -31,6 +31,7 @@ struct BodyFluidForce {
 struct BodyMotion {
   enum class Mode { free, prescribed } mode = Mode::free;
   double release_time = 0.0;                        // free bodies are held until then
+  bool free_while_settling = false;                 // floats with the water during a settled start (free bodies)
   std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed
 };
 
@@ -72,6 +73,14 @@ class RigidBodies {
   };
   std::vector<MeanForces> take_mean_forces();
 
+  // A settled start (coupling/relaxation.hpp) runs the step loop before t = 0. While it does, prescribed bodies stay
+  // at their pose of t = 0, free bodies are held unless they float with the water (free_while_settling), and no
+  // release time passes. Ending it restores the holds of t = 0 and stops every body.
+  void set_settling(bool on);
+  bool settling() const { return settling_; }
+  // Multiplies the velocities of the bodies that float while settling by `factor` (the settling's damping).
+  void damp_floating(double factor);
+
   // Hands the accumulated forces to the rigid world, steps it by dt (time is the time after the step), and starts
   // the next step's accumulation.
   void advance(double time_after, double dt);
@@ -87,6 +96,7 @@ class RigidBodies {
   std::vector<Vec<2>> scratch_;
   std::vector<rigid::PlanarState> placed_state_;  // at the last placement
   double placed_time_ = 0.0;
+  bool settling_ = false;
 };
 
 }  // namespace slide

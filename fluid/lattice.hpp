@@ -31,22 +31,32 @@ inline double row_spacing(LatticeKind k, double dp) {
 
 // Lattice point (i, j) in 2-D, anchored so that the square lattice's cells tile the plane from the origin:
 // square: ((i + 1/2) dp, (j + 1/2) dp); hexagonal: rows at (j + 1/2) h, odd rows shifted by half a spacing,
-// x = (i + 1/2 + (j mod 2) / 2) a.
-inline Vec<2> lattice_point(LatticeKind k, double dp, long i, long j) {
-  if (k == LatticeKind::square) return Vec<2>((i + 0.5) * dp, (j + 0.5) * dp);
+// x = (i + 1/2 + (j mod 2) / 2) a. The whole lattice is then moved by `offset` (cases/scene.cpp moves the rows to
+// meet a body's bottom, row_offset_to_meet below).
+inline Vec<2> lattice_point(LatticeKind k, double dp, long i, long j, const Vec<2>& offset = Vec<2>::Zero()) {
+  if (k == LatticeKind::square) return Vec<2>((i + 0.5) * dp, (j + 0.5) * dp) + offset;
   const double a = nearest_spacing(k, dp), h = row_spacing(k, dp);
   const long odd = ((j % 2) + 2) % 2;
-  return Vec<2>((i + 0.5 + 0.5 * odd) * a, (j + 0.5) * h);
+  return Vec<2>((i + 0.5 + 0.5 * odd) * a, (j + 0.5) * h) + offset;
 }
 
 // Calls f(point) for every 2-D lattice point in the box [lo, hi] (and a few beyond it; callers test membership).
 template <class F>
-void for_each_lattice_point(LatticeKind k, double dp, const Vec<2>& lo, const Vec<2>& hi, F&& f) {
+void for_each_lattice_point(LatticeKind k, double dp, const Vec<2>& lo, const Vec<2>& hi, F&& f,
+                            const Vec<2>& offset = Vec<2>::Zero()) {
   const double a = nearest_spacing(k, dp), h = row_spacing(k, dp);
-  const long i0 = static_cast<long>(std::floor(lo[0] / a)) - 2, i1 = static_cast<long>(std::ceil(hi[0] / a)) + 1;
-  const long j0 = static_cast<long>(std::floor(lo[1] / h)) - 1, j1 = static_cast<long>(std::ceil(hi[1] / h)) + 1;
+  const Vec<2> l = lo - offset, u = hi - offset;
+  const long i0 = static_cast<long>(std::floor(l[0] / a)) - 2, i1 = static_cast<long>(std::ceil(u[0] / a)) + 1;
+  const long j0 = static_cast<long>(std::floor(l[1] / h)) - 1, j1 = static_cast<long>(std::ceil(u[1] / h)) + 1;
   for (long j = j0; j <= j1; ++j)
-    for (long i = i0; i <= i1; ++i) f(lattice_point(k, dp, i, j));
+    for (long i = i0; i <= i1; ++i) f(lattice_point(k, dp, i, j, offset));
+}
+
+// The vertical offset, in (-h/2, h/2], that puts a row of the lattice at height y.
+inline double row_offset_to_meet(LatticeKind k, double dp, double y) {
+  const double h = row_spacing(k, dp);
+  const double unshifted = (std::round(y / h - 0.5) + 0.5) * h;  // the nearest row of the unmoved lattice
+  return y - unshifted;
 }
 
 // n0, lambda and kappa (fluid/kernel.hpp) on the hexagonal lattice of nearest spacing a:

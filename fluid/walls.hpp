@@ -98,7 +98,8 @@ inline std::vector<BoundaryPoint> polyline_boundary(const std::vector<Vec<2>>& f
 // number density of the bulk. Normal and depth are those of the nearest face point (the bisecting direction behind a
 // corner); layer 0 (the wall layer) is everything less than one row spacing deep.
 inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& face, bool fluid_on_left, double dp,
-                                                   double re, LatticeKind kind) {
+                                                   double re, LatticeKind kind,
+                                                   const Vec<2>& offset = Vec<2>::Zero()) {
   const std::size_t nv = face.size();
   if (nv < 2) throw std::invalid_argument("a wall needs at least two vertices");
   for (std::size_t s = 0; s + 1 < nv; ++s)
@@ -133,7 +134,7 @@ inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& fa
     const bool corner = best > eps && (nearest - p).normalized().dot(inward) < 1.0 - 1e-9;
     const Vec<2> normal = corner ? Vec<2>((nearest - p).normalized()) : inward;
     out.push_back({p, normal, best, best < row - eps ? 0 : 1});
-  });
+  }, offset);
   return out;
 }
 

@@ -1,6 +1,9 @@
 // Scenes: the schema document is current, shipped scenes build what they say, region types fill as documented.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "fluid/lattice.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
 
@@ -31,8 +34,11 @@ TEST(Scene, ShippedScenesBuild) {
   auto bench = load_shipped_scene("dam_break_bench_2d.yaml");
   EXPECT_EQ(bench->fluid_count, 20000u);
   EXPECT_NEAR(bench->deepest_water, 2.0, 1e-9);
-  auto block = load_shipped_scene("floating_block_2d.yaml", {"method.initial_state=hydrostatic"});
-  EXPECT_EQ(block->fluid_count, 2900u);  // 100 x 30 lattice points less the block's 20 x 5 below the level
+  // On the square lattice at dp = 0.01: 100 x 30 lattice points less the block's 20 x 5 below the level.
+  auto block = load_shipped_scene("floating_block_2d.yaml",
+                                  {"lattice=square", "particle_spacing=0.01", "method.wall_pressure=mirror",
+                                   "method.initial_state=hydrostatic", "bodies[0].during_settling=held"});
+  EXPECT_EQ(block->fluid_count, 2900u);
   ASSERT_EQ(block->bodies.size(), 1u);
   EXPECT_NEAR(block->bodies[0].mass, 10.0, 1e-12);
   EXPECT_NEAR(block->bodies[0].buoyancy_ratio, 1.0, 1e-12);
@@ -88,9 +94,6 @@ walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"method: {initial_state: lattice}\n", "method.wall_pressure"},  // mirror is the default
       {"method: {wall_pressure: extrapolated}\n", "method.initial_state"},  // hydrostatic is the default
-      {"method: {wall_pressure: extrapolated, initial_state: lattice}\n"
-       "bodies: [{name: b, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.2]}, density: 500}]\n",
-       "bodies"},
   };
   for (const auto& [extra, key] : cases) {
     write_file(dir / "s.yaml", tank + extra);
@@ -112,6 +115,54 @@ walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
   // rows, (i + 1) a in odd ones, a = 0.10746 m, below x = 1 m).
   auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
   EXPECT_EQ(scene->fluid_count, 5u * 9u);
+}
+
+// With a body on the hexagonal lattice the rows are moved so that the water under the body starts dp / 2 below its
+// bottom, as on the square lattice (a wider gap could not close under a held body).
+TEST(Scene, HexagonalRowsMeetTheFirstBodysBottom) {
+  const auto dir = fresh_directory("hexagonal_body");
+  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
+end_time: 1
+lattice: hexagonal
+fluid:
+  phases: [{name: water}]
+  regions: [{type: below_level, level: 0.3}]
+walls: [{points: [[0, 0.5], [0, 0], [1, 0], [1, 0.5]]}]
+bodies: [{name: b, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.1]}, density: 500}]
+method: {wall_pressure: extrapolated, initial_state: lattice}
+)");
+  const auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  const double dp = 0.01, h = row_spacing(LatticeKind::hexagonal, dp);
+  EXPECT_LE(std::abs(scene->lattice_offset[1]), 0.5 * h + 1e-15);
+  const auto& P = scene->simulation->particles;
+  double highest_below = -1.0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::fluid && std::abs(P.position[i][0] - 0.5) < 0.1 && P.position[i][1] < 0.25)
+      highest_below = std::max(highest_below, P.position[i][1]);
+  EXPECT_NEAR(highest_below, 0.25 - 0.5 * dp, 1e-12);
+}
+
+TEST(Scene, FloatingWhileSettlingNeedsAFreeBodyAndASettledStart) {
+  const auto dir = fresh_directory("during_settling");
+  const std::string base = R"(particle_spacing: 0.05
+end_time: 1
+fluid:
+  phases: [{name: water}]
+  regions: [{type: below_level, level: 0.5}]
+walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
+bodies: [{name: b, shape: {type: box, center: [0.5, 0.5], size: [0.2, 0.2]}, density: 500, during_settling: free}]
+)";
+  for (const auto& [extra, overrides] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"method: {initial_state: hydrostatic}\n", {}},
+           {"method: {initial_state: settled, settling_time: 0.1}\n", {"bodies[0].release_time=0.5"}}}) {
+    write_file(dir / "s.yaml", base + extra);
+    try {
+      cases::build_scene(cases::load_scene(dir / "s.yaml", overrides), "s");
+      ADD_FAILURE() << "expected a SceneError for " << extra;
+    } catch (const cases::SceneError& e) {
+      EXPECT_EQ(e.key_path, "bodies[0].during_settling");
+    }
+  }
 }
 
 }  // namespace

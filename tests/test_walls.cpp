@@ -134,5 +134,28 @@ TEST(Walls, HexagonalClosedOutlineHasNoOpenEnds) {
   }
 }
 
+// row_offset_to_meet moves the lattice by less than half a row spacing so that a row lies at the given height, and
+// for_each_lattice_point with that offset visits exactly the moved points.
+TEST(Walls, LatticeOffsetPutsARowAtAGivenHeight) {
+  for (const LatticeKind kind : {LatticeKind::square, LatticeKind::hexagonal}) {
+    const double dp = 0.01, h = row_spacing(kind, dp);
+    for (const double y : {0.245, -0.0371, 0.5 * h, 0.3333}) {
+      const double off = row_offset_to_meet(kind, dp, y);
+      EXPECT_LE(std::abs(off), 0.5 * h + 1e-15) << y;
+      const Vec<2> offset(0.0, off);
+      int on_row = 0, visited = 0;
+      for_each_lattice_point(kind, dp, Vec<2>(0.0, y - 0.05), Vec<2>(0.1, y + 0.05), [&](const Vec<2>& p) {
+        ++visited;
+        if (std::abs(p[1] - y) < 1e-12) ++on_row;
+        // Every visited point is a moved lattice point: its row index is a whole number.
+        const double j = (p[1] - off) / h - 0.5;
+        EXPECT_NEAR(j, std::round(j), 1e-9);
+      }, offset);
+      EXPECT_GT(visited, 0);
+      EXPECT_GE(on_row, static_cast<int>(0.1 / nearest_spacing(kind, dp))) << y;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace slide

@@ -124,7 +124,7 @@ int check_command(const RunArguments& args) {
       "case            {}\n"
       "particles       {} total: {} fluid, {} wall, {} dummy\n"
       "spacing dp      {} m, kernel radius re = {} dp = {} m\n"
-      "lattice         {} (nearest spacing {:.6g} dp)\n"
+      "lattice         {} (nearest spacing {:.6g} dp){}\n"
       "n0, lambda      {:.9g}, {:.9g} m^2 (lambda / dp^2 = {:.6g})\n"
       "sound speed c0  {:.6g} m/s ({})\n"
       "gradient model  {}\n"
@@ -134,7 +134,11 @@ int check_command(const RunArguments& args) {
       "memory          about {:.1f} MB\n"
       "{}",
       scene->name, sim.particles.size(), scene->fluid_count, scene->wall_count, scene->dummy_count, o.dp,
-      o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp, sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
+      o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
+      scene->lattice_offset[1] != 0.0
+          ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene->lattice_offset[1])
+          : std::string(),
+      sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene->sound_speed_source, to_string(o.gradient), dt, time_step_limit_names[static_cast<int>(limit)],
       scene->end_time, scene->end_time / dt, o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1],
       memory_estimate_mb(sim),
@@ -157,6 +161,15 @@ int check_command(const RunArguments& args) {
         "  area            {:.6g} m^2, displaced below the still-water level {:.6g} m^2, buoyancy / weight {:.4g}\n",
         b.name, b.motion, b.particles, b.mass, b.mass_particles, b.inertia, b.inertia_particles, b.area,
         b.displaced_area, b.buoyancy_ratio);
+  for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
+    const auto& b = scene->bodies[k];
+    if (!b.free_while_settling || !scene->settling) continue;
+    const auto s = sim.bodies->state(static_cast<int>(k));
+    std::cout << fmt::format("  settled with the water: centre ({:.6g}, {:.6g}) m, angle {:.4g} deg, {:.3g} mm from "
+                             "where it was put\n",
+                             s.position[0], s.position[1], s.angle * 180.0 / M_PI,
+                             1000.0 * (Vec<2>(s.position[0], s.position[1]) - b.placed).norm());
+  }
   return 0;
 }
 
