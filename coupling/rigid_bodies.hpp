@@ -77,7 +77,6 @@ class RigidBodies {
   // at their pose of t = 0, free bodies are held unless they float with the water (free_while_settling), and no
   // release time passes. Ending it restores the holds of t = 0 and stops every body.
   void set_settling(bool on);
-  bool settling() const { return settling_; }
   // Multiplies the velocities of the bodies that float while settling by `factor` (the settling's damping).
   void damp_floating(double factor);
 

@@ -163,12 +163,16 @@ bodies:
   bodies.world.set_velocity(0, rigid::Vec2(0.5, 0.2), 1.0);
   const double volume = sim.options.dp * sim.options.dp;
   auto momentum = [&]() {
-    Vec<2> m = Vec<2>::Zero();
+    // Two scalars rather than a Vec<2> sum: GCC 12 warns (falsely) of an uninitialised vector register otherwise.
+    double mx = 0.0, my = 0.0;
     const auto& P = sim.particles;
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.kind[i] == Kind::fluid) m += (P.density[i] * volume) * P.velocity[i];
+      if (P.kind[i] == Kind::fluid) {
+        mx += P.density[i] * volume * P.velocity[i][0];
+        my += P.density[i] * volume * P.velocity[i][1];
+      }
     const auto s = bodies.state(0);
-    return m + bodies.world.mass(0) * Vec<2>(s.velocity[0], s.velocity[1]);
+    return Vec<2>(mx + bodies.world.mass(0) * s.velocity[0], my + bodies.world.mass(0) * s.velocity[1]);
   };
   const Vec<2> m0 = momentum();
   const double scale = m0.norm();
