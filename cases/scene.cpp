@@ -10,6 +10,7 @@
 #include <sstream>
 #include <map>
 
+#include "cases/initial_state.hpp"
 #include "coupling/equilibrium_column.hpp"
 #include "coupling/relaxation.hpp"
 #include "coupling/rigid_bodies.hpp"
@@ -72,7 +73,7 @@ Schema make_schema() {
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
        {"motion", S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
-                            "the law in `prescribed`", {"free", "prescribed"}, "free")},
+                            "the law in `prescribed`", BodyMotion::mode_names.names(), "free")},
        {"locked", S::list("components held fixed (free motion)", S::choice("component", {"x", "y", "rotation"}, std::nullopt))},
        {"release_time", S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
@@ -99,8 +100,8 @@ Schema make_schema() {
   auto method = S::map(
       "numerical method (weakly compressible MPS, seed eqs. 1-7)",
       {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
-       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", {"standard", "pmin", "symmetric", "variational", "difference"},
-                              "symmetric")},
+       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", gradient_model_names.names(),
+                              std::string(to_string(GradientModel::symmetric)))},
        {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
        {"sound_speed", S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0,
                                  0.0, inf)},
@@ -109,13 +110,13 @@ Schema make_schema() {
        {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
        {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
-                               {"no_slip", "free_slip"}, "no_slip")},
+                               wall_slip_names.names(), std::string(to_string(WallSlip::no_slip)))},
        {"wall_pressure", S::choice("pressure of boundary particles: mirror takes the fluid's pressure at the "
                                    "particle's mirror image plus the hydrostatic head; number_density gives "
                                    "wall-layer particles the pressure of their own number density (dummies none); "
                                    "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
                                    "et al. 2012) (fluid/wall_pressure.hpp)",
-                                   {"mirror", "number_density", "extrapolated"}, "mirror")},
+                                   wall_pressure_names.names(), std::string(to_string(WallPressure::mirror)))},
        {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
                                           "(fluid/artificial_viscosity.hpp)", "", 0.0, 0.0, 1.0)},
        {"collision_distance", S::number("collision model (fluid/collision.hpp): fluid particles closer than this "
@@ -126,7 +127,7 @@ Schema make_schema() {
                                    "does that and then lets water at rest settle with damping for settling_time "
                                    "(coupling/relaxation.hpp), for scenes whose water starts at rest; lattice starts "
                                    "from the uncompressed lattice",
-                                   {"hydrostatic", "settled", "lattice"}, "hydrostatic")},
+                                   initial_state_names.names(), std::string(to_string(InitialState::hydrostatic)))},
        {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
        {"settling_damping", S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, inf,
                                       true)},
@@ -186,7 +187,7 @@ Schema make_schema() {
                              "the wall pressure must be extrapolated or number_density, the initial state lattice or "
                              "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
                              "lies dp/2 below the lowest point of the first body",
-                             {"square", "hexagonal"}, "square")},
+                             lattice_kind_names.names(), std::string(to_string(LatticeKind::square)))},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
        {"domain", domain},
@@ -378,18 +379,18 @@ BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene
     BodyMotion motion;
     motion.release_time = bn["release_time"].as<double>();
     const std::string mode = bn["motion"].as<std::string>();
+    motion.mode = BodyMotion::mode_names.parse(mode);
     motion.free_while_settling = bn["during_settling"].as<std::string>() == "free";
     if (motion.free_while_settling) {
-      if (mode != "free")
+      if (motion.mode != BodyMotion::Mode::free)
         throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
       if (motion.release_time > 0.0)
         throw SceneError(path + ".during_settling", "free contradicts release_time > 0 (which holds the body)");
-      if (r["method"]["initial_state"].as<std::string>() != "settled")
+      if (initial_state_names.parse(r["method"]["initial_state"].as<std::string>()) != InitialState::settled)
         throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
                                                     "otherwise)");
     }
-    if (mode == "prescribed") {
-      motion.mode = BodyMotion::Mode::prescribed;
+    if (motion.mode == BodyMotion::Mode::prescribed) {
       spec.kinematic = true;
       if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
       const YAML::Node pr = bn["prescribed"];
@@ -416,8 +417,6 @@ BodiesBuilt build_bodies(const YAML::Node& r, const std::filesystem::path& scene
         motion.prescribed = rigid::PrescribedMotion::ln_cosh(c, 0.0, r2(d), pr["s0"].as<double>(), pr["t0"].as<double>(),
                                                              pr["start_time"].as<double>());
       }
-    } else if (motion.release_time > 0.0 && spec.locked[0] && spec.locked[1] && spec.locked[2]) {
-      // nothing to release, but harmless
     }
     const int b = out.bodies->add(name, spec, motion, density);
     // Boundary particles: the outline as a closed face with the fluid outside, layers inside.
@@ -539,13 +538,15 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   const double dp = r["particle_spacing"].as<double>();
   const YAML::Node m = r["method"];
   opt.dp = dp;
-  const bool hexagonal = r["lattice"].as<std::string>() == "hexagonal";
-  opt.lattice = hexagonal ? LatticeKind::hexagonal : LatticeKind::square;
+  opt.lattice = lattice_kind_names.parse(r["lattice"].as<std::string>());
+  const bool hexagonal = opt.lattice == LatticeKind::hexagonal;
+  const InitialState initial_state = initial_state_names.parse(m["initial_state"].as<std::string>());
+  const WallPressure opt_wall_pressure = wall_pressure_names.parse(m["wall_pressure"].as<std::string>());
   if (hexagonal) {
-    if (m["wall_pressure"].as<std::string>() == "mirror")
+    if (opt_wall_pressure == WallPressure::mirror)
       throw SceneError("method.wall_pressure", "the mirror model needs lattice: square (its images assume the square "
                                                "lattice); use extrapolated or number_density with lattice: hexagonal");
-    if (m["initial_state"].as<std::string>() == "hydrostatic")
+    if (initial_state == InitialState::hydrostatic)
       throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
                                                "compresses it); the column-wise hydrostatic start needs lattice: square");
     for (std::size_t w = 0; w < r["walls"].size(); ++w)
@@ -555,23 +556,15 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   }
   opt.re_over_dp = m["kernel_radius"].as<double>();
   opt.skin_over_dp = m["neighbor_skin"].as<double>();
-  const std::string grad = m["gradient"].as<std::string>();
-  opt.gradient = grad == "standard"    ? GradientModel::standard
-                 : grad == "pmin"      ? GradientModel::pmin
-                 : grad == "symmetric" ? GradientModel::symmetric
-                 : grad == "variational" ? GradientModel::variational
-                                         : GradientModel::difference;
+  opt.gradient = gradient_model_names.parse(m["gradient"].as<std::string>());
   opt.gamma = m["gamma"].as<double>();
   opt.free_surface_beta = m["free_surface_beta"].as<double>();
   opt.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
-  opt.wall_slip = m["wall_slip"].as<std::string>() == "no_slip" ? WallSlip::no_slip : WallSlip::free_slip;
+  opt.wall_slip = wall_slip_names.parse(m["wall_slip"].as<std::string>());
   opt.artificial_viscosity = m["artificial_viscosity"].as<double>();
   opt.collision_distance_over_dp = m["collision_distance"].as<double>();
   opt.collision_restitution = m["collision_restitution"].as<double>();
-  const std::string wall_pressure = m["wall_pressure"].as<std::string>();
-  opt.wall_pressure = wall_pressure == "extrapolated"     ? FluidOptions<2>::WallPressure::extrapolated
-                      : wall_pressure == "number_density" ? FluidOptions<2>::WallPressure::number_density
-                                                          : FluidOptions<2>::WallPressure::mirror;
+  opt.wall_pressure = wall_pressure_names.parse(m["wall_pressure"].as<std::string>());
   opt.gravity = vec2(r["gravity"]);
   opt.cfl = r["time_step"]["cfl"].as<double>();
   opt.viscous_number = r["time_step"]["viscous_number"].as<double>();
@@ -756,11 +749,10 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     scene->sound_speed_source =
         fmt::format("default 10 sqrt(g H), H = {:.6g} m (deepest water), g = {:.6g} m/s^2", scene->deepest_water, g);
   }
-  const std::string initial_state = m["initial_state"].as<std::string>();
-  if (initial_state == "settled" && !(g > 0.0))
+  if (initial_state == InitialState::settled && !(g > 0.0))
     throw SceneError("method.initial_state", "a settled start needs downward gravity");
   // The hexagonal lattice is compressed by settling alone (its columns are not the square lattice's runs).
-  if (initial_state != "lattice" && g > 0.0 && !hexagonal) {
+  if (initial_state != InitialState::lattice && g > 0.0 && !hexagonal) {
     const LatticeConstants lc = lattice_constants<2>(dp, re);
     const int rows = static_cast<int>(std::lround(scene->deepest_water / dp));
     try {
@@ -830,7 +822,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     scene->body_sample_interval = r["output"]["body_interval"].as<double>();
   }
   sim->initialise();
-  if (initial_state == "settled") {
+  if (initial_state == InitialState::settled) {
     try {
       scene->settling = relax_at_rest(*sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>());
     } catch (const std::runtime_error& e) {

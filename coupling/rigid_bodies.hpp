@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fluid/gradient.hpp"
+#include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/viscosity.hpp"
@@ -30,6 +31,8 @@ struct BodyFluidForce {
 
 struct BodyMotion {
   enum class Mode { free, prescribed } mode = Mode::free;
+  static constexpr auto mode_names =
+      make_name_table<Mode>(std::pair{Mode::free, "free"}, std::pair{Mode::prescribed, "prescribed"});
   double release_time = 0.0;                        // free bodies are held until then
   bool free_while_settling = false;                 // floats with the water during a settled start (free bodies)
   std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed

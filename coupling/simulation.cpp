@@ -49,7 +49,7 @@ template <int D>
 void Simulation<D>::compute_pressure() {
   auto& P = particles;
   const double r_e = re();
-  using WP = typename FluidOptions<D>::WallPressure;
+  using WP = WallPressure;
   if (options.wall_pressure == WP::mirror) {
     parallel_for(P.size(), [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, options.dp);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fluid/kernel.hpp"
+#include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 
@@ -20,16 +21,12 @@ enum class GradientModel {
   difference,   // (p_j - p_i) with the kernel derivative: no background-pressure forces, lattice-stable
 };
 
-inline std::string_view to_string(GradientModel m) {
-  switch (m) {
-    case GradientModel::standard: return "standard";
-    case GradientModel::pmin: return "pmin";
-    case GradientModel::symmetric: return "symmetric";
-    case GradientModel::variational: return "variational";
-    case GradientModel::difference: return "difference";
-  }
-  return "?";
-}
+inline constexpr auto gradient_model_names = make_name_table<GradientModel>(
+    std::pair{GradientModel::standard, "standard"}, std::pair{GradientModel::pmin, "pmin"},
+    std::pair{GradientModel::symmetric, "symmetric"}, std::pair{GradientModel::variational, "variational"},
+    std::pair{GradientModel::difference, "difference"});
+
+inline std::string_view to_string(GradientModel m) { return gradient_model_names.name(m); }
 
 // Seed eq. 3 (Koshizuka & Oka 1996; Lee et al. 2008), the MPS gradient of any scalar phi:
 //   grad phi_i = d / n0 * sum_{j != i} (phi_j - phi_i) / |r_ij|^2 * r_ij * W(|r_ij|),  r_ij = r_j - r_i.

@@ -11,12 +11,16 @@
 #include <string_view>
 
 #include "fluid/kernel.hpp"
+#include "fluid/name_table.hpp"
 
 namespace slide {
 
 enum class LatticeKind { square, hexagonal };
 
-inline std::string_view to_string(LatticeKind k) { return k == LatticeKind::square ? "square" : "hexagonal"; }
+inline constexpr auto lattice_kind_names = make_name_table<LatticeKind>(std::pair{LatticeKind::square, "square"},
+                                                                      std::pair{LatticeKind::hexagonal, "hexagonal"});
+
+inline std::string_view to_string(LatticeKind k) { return lattice_kind_names.name(k); }
 
 // Nearest-neighbour distance of a lattice with one particle per dp^2: dp on the square lattice, and on the
 // hexagonal lattice a with a * (sqrt(3) / 2) a = dp^2, i.e. a = dp sqrt(2 / sqrt(3)) = 1.0746 dp.

@@ -5,12 +5,18 @@
 #include <vector>
 
 #include "fluid/kernel.hpp"
+#include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 
 namespace slide {
 
 enum class WallSlip { no_slip, free_slip };
+
+inline constexpr auto wall_slip_names =
+    make_name_table<WallSlip>(std::pair{WallSlip::no_slip, "no_slip"}, std::pair{WallSlip::free_slip, "free_slip"});
+
+inline std::string_view to_string(WallSlip s) { return wall_slip_names.name(s); }
 
 // a_i = 1/rho_i * 2d / (lambda n0) * sum_j mu_ij (u_j - u_i) W(|r_ij|)        (seed eq. 4 applied to mu grad u)
 // mu_ij = 2 mu_i mu_j / (mu_i + mu_j), the harmonic mean across a pair (Shakibaeinia & Jin 2011, multiphase MPS),

@@ -3,10 +3,23 @@
 #include <vector>
 
 #include "fluid/kernel.hpp"
+#include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 
 namespace slide {
+
+// Pressure of boundary particles. number_density: wall-layer particles take the pressure of their own number density
+// (seed eq. 7), dummies none (classic MPS: a particle pressing on the wall raises the wall's pressure). extrapolated:
+// wall and dummy particles continue the fluid's pressure field; mirror: they take the pressure at their mirror image
+// in the fluid plus the hydrostatic head (both below).
+enum class WallPressure { number_density, extrapolated, mirror };
+
+inline constexpr auto wall_pressure_names = make_name_table<WallPressure>(
+    std::pair{WallPressure::mirror, "mirror"}, std::pair{WallPressure::number_density, "number_density"},
+    std::pair{WallPressure::extrapolated, "extrapolated"});
+
+inline std::string_view to_string(WallPressure w) { return wall_pressure_names.name(w); }
 
 // Pressure of a boundary particle (wall or dummy) extrapolated from its fluid neighbours
 // (Adami, Hu & Adams 2012, J. Comput. Phys. 231, eq. 27):

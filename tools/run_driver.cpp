@@ -86,10 +86,10 @@ struct IdOrdered {
   SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
 };
 
-std::string limit_summary(const std::array<long, 5>& counts) {
+std::string limit_summary(const std::array<long, time_step_limit_count>& counts) {
   std::string s;
   for (std::size_t k = 0; k < counts.size(); ++k)
-    if (counts[k] > 0) s += fmt::format("{}{} {}", s.empty() ? "" : ", ", time_step_limit_names[k], counts[k]);
+    if (counts[k] > 0) s += fmt::format("{}{} {}", s.empty() ? "" : ", ", to_string(TimeStepLimit(k)), counts[k]);
   return s;
 }
 
@@ -139,7 +139,7 @@ int check_command(const RunArguments& args) {
           ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene->lattice_offset[1])
           : std::string(),
       sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
-      scene->sound_speed_source, to_string(o.gradient), dt, time_step_limit_names[static_cast<int>(limit)],
+      scene->sound_speed_source, to_string(o.gradient), dt, to_string(limit),
       scene->end_time, scene->end_time / dt, o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1],
       memory_estimate_mb(sim),
       scene->equilibrium
@@ -282,7 +282,7 @@ int run_command(const RunArguments& args) {
                     {"domain_min", {sim.options.domain_lo[0], sim.options.domain_lo[1]}},
                     {"domain_max", {sim.options.domain_hi[0], sim.options.domain_hi[1]}}};
     json limits = json::object();
-    for (std::size_t k = 0; k < sim.limit_counts.size(); ++k) limits[time_step_limit_names[k]] = sim.limit_counts[k];
+    for (std::size_t k = 0; k < sim.limit_counts.size(); ++k) limits[std::string(to_string(TimeStepLimit(k)))] = sim.limit_counts[k];
     j["time_step_limits"] = limits;
     j["simulated_time"] = sim.time;
     j["steps"] = sim.step_count;

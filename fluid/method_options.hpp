@@ -1,0 +1,28 @@
+#pragma once
+// The numerical method's settings (scene keys `particle_spacing`, `lattice` and `method.*`).
+#include "fluid/gradient.hpp"
+#include "fluid/lattice.hpp"
+#include "fluid/viscosity.hpp"
+#include "fluid/wall_pressure.hpp"
+
+namespace slide {
+
+struct MethodOptions {
+  double dp = 0.01;                 // particle spacing, m
+  double re_over_dp = 2.1;          // kernel radius in spacings
+  LatticeKind lattice = LatticeKind::square;  // the lattice the particles start on: n0, lambda, kappa are its sums
+  double skin_over_dp = 0.3;        // neighbour-list skin in spacings
+  GradientModel gradient = GradientModel::symmetric;
+  double gamma = 7.0;
+  double sound_speed = 10.0;        // c0, m/s
+  double free_surface_beta = 0.97;  // n < beta n0: free-surface particle, pressure set to zero
+  bool clamp_negative_pressure = true;
+  WallSlip wall_slip = WallSlip::no_slip;
+  WallPressure wall_pressure = WallPressure::mirror;
+  double artificial_viscosity = 0.0;  // Monaghan alpha; 0 = off
+  double collision_distance_over_dp = 0.5;  // collision model (fluid/collision.hpp); 0 = off
+  double collision_restitution = 0.2;
+  double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while settling
+};
+
+}  // namespace slide
