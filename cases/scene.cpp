@@ -818,7 +818,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
 
   finish_body_reports(scene->bodies, built, dp, still_level, phase_props[0].first);
   if (!built.outlines.empty()) {
-    sim->bodies = std::move(built.bodies);
+    sim->attach_bodies(std::move(built.bodies));
     scene->body_sample_interval = r["output"]["body_interval"].as<double>();
   }
   sim->initialise();

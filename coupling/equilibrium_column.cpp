@@ -1,12 +1,56 @@
 #include "coupling/equilibrium_column.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "coupling/advance.hpp"
 #include "fluid/hydrostatic_start.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide {
+namespace {
+
+// After every step, every column moves with the middle one (no shear, so the lattice cannot rearrange); the loop
+// stops once the rows have stopped (after t_min, row speeds below the tolerance).
+class ColumnObserver : public StepObserver<2> {
+ public:
+  ColumnObserver(Particles<2>& P, std::size_t first_fluid, int columns, int half, int rows, double dp, double tolerance,
+                 double t_min)
+      : y(rows), vy(rows), P_(P), first_fluid_(first_fluid), columns_(columns), half_(half), dp_(dp),
+        tolerance_(tolerance), t_min_(t_min) {}
+
+  bool before_step(const Simulation<2>& sim) override { return !(sim.time() > t_min_ && speed < tolerance_); }
+
+  void after_step(Simulation<2>&, double) override {
+    speed = 0.0;
+    for (std::size_t i = 0; i < P_.size(); ++i)
+      if (P_.kind[i] == Kind::fluid && column_of(P_.id[i]) == 0) {
+        y[row_of(P_.id[i])] = P_.position[i][1];
+        vy[row_of(P_.id[i])] = P_.velocity[i][1];
+        speed = std::max(speed, std::abs(P_.velocity[i][1]));
+      }
+    for (std::size_t i = 0; i < P_.size(); ++i)
+      if (P_.kind[i] == Kind::fluid) {
+        P_.position[i] = Vec<2>((column_of(P_.id[i]) + 0.5) * dp_, y[row_of(P_.id[i])]);
+        P_.velocity[i] = Vec<2>(0.0, vy[row_of(P_.id[i])]);
+      }
+  }
+
+  std::vector<double> y, vy;  // per row, of the middle column
+  double speed = std::numeric_limits<double>::infinity();  // largest row speed after the last step
+
+ private:
+  int row_of(std::uint32_t id) const { return static_cast<int>((id - first_fluid_) / columns_); }
+  int column_of(std::uint32_t id) const { return static_cast<int>((id - first_fluid_) % columns_) - half_; }
+  Particles<2>& P_;
+  std::size_t first_fluid_;
+  int columns_, half_;
+  double dp_, tolerance_, t_min_;
+};
+
+}  // namespace
 
 EquilibriumColumn equilibrium_column(const FluidOptions<2>& options, double density, double viscosity, int rows) {
   const double dp = options.dp, re = options.re_over_dp * dp;
@@ -38,36 +82,17 @@ EquilibriumColumn equilibrium_column(const FluidOptions<2>& options, double dens
   sim.options.domain_hi = Vec<2>(floor_half_width + 4 * re, 1.5 * height + 4 * re);
   // Slowest mode: the column's quarter-wave acoustic mode; damp it critically.
   const double omega = M_PI * options.sound_speed / (2.0 * height);
-  sim.options.velocity_damping_rate = 2.0 * omega;
+  sim.set_velocity_damping(2.0 * omega);
   sim.initialise();
 
-  auto row_of = [&](std::uint32_t id) { return static_cast<int>((id - first_fluid) / columns); };
-  auto column_of = [&](std::uint32_t id) { return static_cast<int>((id - first_fluid) % columns) - half; };
-  std::vector<double> y(rows), vy(rows);
-  const double tolerance = 1e-7 * std::sqrt(g * height);
-  const double t_min = 3.0 / omega, t_max = 60.0 / omega;
+  ColumnObserver column(P, first_fluid, columns, half, rows, dp, 1e-7 * std::sqrt(g * height), 3.0 / omega);
+  const AdvanceResult result = advance<2>(sim, 60.0 / omega, {&column});
+  if (result.instability) throw std::runtime_error("the equilibrium column went unstable: " + result.instability->reason);
   EquilibriumColumn out;
-  for (;;) {
-    auto [dt, limit] = sim.allowed_time_step();
-    if (auto bad = sim.step(dt, limit))
-      throw std::runtime_error("the equilibrium column went unstable: " + bad->reason);
-    double speed = 0.0;
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.kind[i] == Kind::fluid && column_of(P.id[i]) == 0) {
-        y[row_of(P.id[i])] = P.position[i][1];
-        vy[row_of(P.id[i])] = P.velocity[i][1];
-        speed = std::max(speed, std::abs(P.velocity[i][1]));
-      }
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.kind[i] == Kind::fluid) {
-        P.position[i] = Vec<2>((column_of(P.id[i]) + 0.5) * dp, y[row_of(P.id[i])]);
-        P.velocity[i] = Vec<2>(0.0, vy[row_of(P.id[i])]);
-      }
-    out.residual_speed = speed;
-    if ((sim.time > t_min && speed < tolerance) || sim.time > t_max) break;
-  }
-  out.relaxation_time = sim.time;
-  out.steps = sim.step_count;
+  out.residual_speed = column.speed;
+  const std::vector<double>& y = column.y;
+  out.relaxation_time = sim.time();
+  out.steps = sim.step_count();
   out.gap_from_top.resize(rows);
   for (int k = 0; k < rows; ++k) {
     const int j = rows - 1 - k;  // row index from the bottom

@@ -1,58 +1,68 @@
 #include "coupling/relaxation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "coupling/advance.hpp"
 #include "coupling/rigid_bodies.hpp"
 
 namespace slide {
+
+namespace {
+
+// Settling's bookkeeping after each step: the largest fluid speed, and the same damping for floating bodies as the
+// fluid gets (Simulation::correct_with_pressure_gradient: u <- u exp(-rate dt)).
+class SettlingObserver : public StepObserver<2> {
+ public:
+  SettlingObserver(Relaxation& out, RigidBodies* floating) : out_(out), floating_(floating) {}
+  void after_step(Simulation<2>& sim, double dt) override {
+    out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
+    if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
+  }
+
+ private:
+  Relaxation& out_;
+  RigidBodies* floating_;
+};
+
+}  // namespace
 
 Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate) {
   Relaxation out;
   out.duration = duration;
   out.damping_rate = damping_rate;
-  auto& P = sim.particles;
+  const auto& P = sim.particles;
   std::vector<Vec<2>> start(P.size());
   for (std::size_t i = 0; i < P.size(); ++i) start[P.id[i]] = P.position[i];
   // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
   // bodies are detached and their particles stand still as walls.
-  const std::shared_ptr<RigidBodies> bodies = std::move(sim.bodies);
+  const std::shared_ptr<RigidBodies> bodies = sim.detach_bodies();
   bool floating = false;
   if (bodies)
     for (const auto& m : bodies->motion) floating = floating || (m.mode == BodyMotion::Mode::free && m.free_while_settling);
   if (floating) {
     bodies->set_settling(true);
-    sim.bodies = bodies;
+    sim.attach_bodies(bodies);
   }
   const double saved_rate = sim.options.velocity_damping_rate;
-  sim.options.velocity_damping_rate = damping_rate;
-  while (sim.time < duration - 1e-12) {
-    auto [dt, limit] = sim.allowed_time_step();
-    if (sim.time + dt > duration) dt = duration - sim.time;
-    if (auto bad = sim.step(dt, limit))
-      throw std::runtime_error("settling went unstable at t = " + std::to_string(bad->time) + " s: " + bad->reason);
-    out.largest_speed = std::max(out.largest_speed, sim.max_fluid_speed());
-    // The same damping as the fluid's (Simulation::step: u <- u exp(-rate dt)).
-    if (floating) bodies->damp_floating(std::exp(-damping_rate * dt));
-  }
-  out.steps = sim.step_count;
+  sim.set_velocity_damping(damping_rate);
+  SettlingObserver observer(out, floating ? bodies.get() : nullptr);
+  const AdvanceResult result = advance<2>(sim, duration, {&observer});
+  if (result.instability)
+    throw std::runtime_error("settling went unstable at t = " + std::to_string(result.instability->time) +
+                             " s: " + result.instability->reason);
+  out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
-  for (std::size_t i = 0; i < P.size(); ++i) {
+  for (std::size_t i = 0; i < P.size(); ++i)
     out.largest_shift = std::max(out.largest_shift, (P.position[i] - start[P.id[i]]).norm());
-    if (P.kind[i] != Kind::fluid) continue;
-    P.velocity[i] = Vec<2>::Zero();
-    P.acceleration[i] = Vec<2>::Zero();
-  }
-  sim.options.velocity_damping_rate = saved_rate;
+  sim.set_velocity_damping(saved_rate);
   if (floating) {
     bodies->set_settling(false);
     bodies->take_mean_forces();  // the settling's forces are not the run's
   }
-  sim.bodies = bodies;
-  sim.time = 0.0;
-  sim.step_count = 0;
-  sim.limit_counts = {};
-  sim.initialise();
+  sim.attach_bodies(bodies);
+  sim.restart_at_rest();
   return out;
 }
 

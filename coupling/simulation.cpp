@@ -20,10 +20,24 @@ void Simulation<D>::initialise() {
   grid_ = NeighborGrid<D>(options.domain_lo, options.domain_hi, re() + options.skin_over_dp * dp);
   scratch_.assign(particles.size(), Vec<D>::Zero());
   if constexpr (D == 2) {
-    if (bodies) bodies->place_particles(particles, time);
+    if (bodies_) bodies_->place_particles(particles, time_);
   }
   update_neighbors(true);
   compute_pressure();
+}
+
+template <int D>
+void Simulation<D>::restart_at_rest() {
+  auto& P = particles;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid) continue;
+    P.velocity[i] = Vec<D>::Zero();
+    P.acceleration[i] = Vec<D>::Zero();
+  }
+  time_ = 0.0;
+  step_count_ = 0;
+  limit_counts_ = {};
+  initialise();
 }
 
 template <int D>
@@ -119,13 +133,25 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
 
 template <int D>
 std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
-  auto& P = particles;
-  const std::size_t n = P.size();
-  const double r_e = re();
   update_neighbors(false);
+  predict_with_viscosity_and_gravity(dt);
+  compute_pressure();  // at the predicted positions
+  correct_with_pressure_gradient(dt);
+  collide(dt);
+  move_bodies(dt);
+  time_ += dt;
+  ++step_count_;
+  ++limit_counts_[static_cast<int>(limit)];
+  return check();
+}
 
-  // Explicit part: viscosity and gravity give the predicted velocity and position (fluid only).
-  parallel_for(n, [&](std::size_t i) {
+// Explicit part: viscosity and gravity give the predicted velocity and position (fluid only). Body particles' share
+// of the viscous term goes to their bodies.
+template <int D>
+void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
+  auto& P = particles;
+  const double r_e = re();
+  parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip);
     if (options.artificial_viscosity > 0.0)
@@ -133,69 +159,70 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
                                               options.sound_speed, options.dp);
     P.acceleration[i] = a + options.gravity;
   });
-  const double volume = std::pow(options.dp, D);  // per particle (per unit width in 2-D)
   if constexpr (D == 2) {
-    if (bodies)
-      bodies->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip, volume);
+    if (bodies_)
+      bodies_->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip, particle_volume());
   }
-  parallel_for(n, [&](std::size_t i) {
+  parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += dt * P.acceleration[i];
     P.position[i] += dt * P.velocity[i];
   });
+}
 
-  // Number density and pressure at the predicted positions.
-  compute_pressure();
-
-  // Pressure-gradient correction.
+// Pressure-gradient correction of velocity and position (and the settling's damping, when on).
+template <int D>
+void Simulation<D>::correct_with_pressure_gradient(double dt) {
+  auto& P = particles;
+  const double r_e = re();
   const GradientModel model = options.gradient;
   const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
-  parallel_for(n, [&](std::size_t i) {
+  parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
-    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e,
-                                                               lattice.n0, lattice.kappa);
+    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa);
   });
   if constexpr (D == 2) {
-    if (bodies) bodies->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, volume);
+    if (bodies_) bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
   }
-  parallel_for(n, [&](std::size_t i) {
+  parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += dt * scratch_[i];
     P.position[i] += (dt * dt) * scratch_[i];
     if (damping != 1.0) P.velocity[i] *= damping;
     P.acceleration[i] += scratch_[i];
   });
+}
 
-  // Collisions between particles that came too close.
-  if (options.collision_distance_over_dp > 0.0) {
-    const double distance = options.collision_distance_over_dp * options.dp;
-    parallel_for(n, [&](std::size_t i) {
-      scratch_[i] = P.kind[i] == Kind::fluid
-                        ? collision_velocity_change<D>(i, P, list_, distance, options.collision_restitution)
-                        : Vec<D>::Zero();
-    });
-    if constexpr (D == 2) {
-      if (bodies) bodies->add_collision_forces(P, list_, distance, options.collision_restitution, volume, dt);
-    }
-    parallel_for(n, [&](std::size_t i) {
-      if (P.kind[i] != Kind::fluid) return;
-      P.velocity[i] += scratch_[i];
-      P.position[i] += dt * scratch_[i];
-    });
-  }
-
-  // Rigid bodies: the fluid's force in, one rigid step of the same dt, boundary particles to the new poses.
+// Collisions between particles that came too close (fluid/collision.hpp).
+template <int D>
+void Simulation<D>::collide(double dt) {
+  if (options.collision_distance_over_dp <= 0.0) return;
+  auto& P = particles;
+  const double distance = options.collision_distance_over_dp * options.dp;
+  parallel_for(P.size(), [&](std::size_t i) {
+    scratch_[i] = P.kind[i] == Kind::fluid
+                      ? collision_velocity_change<D>(i, P, list_, distance, options.collision_restitution)
+                      : Vec<D>::Zero();
+  });
   if constexpr (D == 2) {
-    if (bodies) {
-      bodies->advance(time + dt, dt);
-      bodies->place_particles(P, time + dt);
-    }
+    if (bodies_)
+      bodies_->add_collision_forces(P, list_, distance, options.collision_restitution, particle_volume(), dt);
   }
+  parallel_for(P.size(), [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    P.velocity[i] += scratch_[i];
+    P.position[i] += dt * scratch_[i];
+  });
+}
 
-  time += dt;
-  ++step_count;
-  ++limit_counts[static_cast<int>(limit)];
-  return check();
+// Rigid bodies: the fluid's force in, one rigid step of the same dt, boundary particles to the new poses.
+template <int D>
+void Simulation<D>::move_bodies(double dt) {
+  if constexpr (D == 2) {
+    if (!bodies_) return;
+    bodies_->advance(time_ + dt, dt);
+    bodies_->place_particles(particles, time_ + dt);
+  }
 }
 
 template <int D>
@@ -223,8 +250,8 @@ std::optional<Instability> Simulation<D>::check() const {
   for (std::size_t i = 0; i < P.size(); ++i)
     if (code(i) == worst && (pick == P.size() || P.id[i] < P.id[pick])) pick = i;
   Instability s;
-  s.time = time;
-  s.step = step_count;
+  s.time = time_;
+  s.step = step_count_;
   s.particle = P.id[pick];
   s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
   const double ratio = P.number_density[pick] / lattice.n0;

@@ -3,6 +3,7 @@
 // pressure at the predicted positions, pressure-gradient correction, collisions, rigid bodies (fluid force in,
 // Bullet step, boundary particles placed from the new poses), stability checks.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -35,27 +36,37 @@ class Simulation {
  public:
   Particles<D> particles;
   FluidOptions<D> options;
-  // Rigid bodies two-way coupled with the fluid; null when the scene has none. 2-D only.
-  std::shared_ptr<RigidBodies> bodies;
-
-  double time = 0.0;
-  long step_count = 0;
-  std::array<long, time_step_limit_count> limit_counts{};  // how often each time-step limit ruled
 
   // Derived at initialise(): lattice constants, equation of state, grid.
   LatticeConstants lattice;
   EquationOfState eos;
 
   double re() const { return options.re_over_dp * options.dp; }
+  double time() const { return time_; }
+  long step_count() const { return step_count_; }
+  const std::array<long, time_step_limit_count>& limit_counts() const { return limit_counts_; }  // per limit that ruled
+
+  // Rigid bodies two-way coupled with the fluid; null when the scene has none. 2-D only.
+  const std::shared_ptr<RigidBodies>& bodies() const { return bodies_; }
+  void attach_bodies(std::shared_ptr<RigidBodies> bodies) { bodies_ = std::move(bodies); }
+  std::shared_ptr<RigidBodies> detach_bodies() { return std::move(bodies_); }
+
+  // Fluid velocities decay as exp(-rate t) in every step (settling only; 0 = off).
+  void set_velocity_damping(double rate_per_s) { options.velocity_damping_rate = rate_per_s; }
 
   // Computes n0 and lambda from the lattice, builds the neighbour list, and evaluates number density and
   // pressure at the initial positions.
   void initialise();
 
+  // Makes the present positions the start of the run: time and step counts back to zero, fluid at rest, and
+  // initialise() again (after a settled start).
+  void restart_at_rest();
+
   // The time step the limits allow now, and which limit ruled.
   std::pair<double, TimeStepLimit> allowed_time_step() const;
 
-  // Advances by dt. Returns the instability found after the step, if any (the state is then the failed one).
+  // Advances by dt: the stages below in order, then the checks. Returns the instability found after the step, if
+  // any (the state is then the failed one).
   std::optional<Instability> step(double dt, TimeStepLimit limit);
 
   // Checks the current state: non-finite values, particles out of the domain, number-density collapse, speed.
@@ -70,9 +81,20 @@ class Simulation {
   double fluid_number_density_at(const Vec<D>& point) const;
 
  private:
+  // The stages of one step (DESIGN.md, "The step loop").
   void update_neighbors(bool force);
+  void predict_with_viscosity_and_gravity(double dt);
   void compute_pressure();
+  void correct_with_pressure_gradient(double dt);
+  void collide(double dt);
+  void move_bodies(double dt);
 
+  double particle_volume() const { return std::pow(options.dp, D); }  // per unit width in 2-D
+
+  std::shared_ptr<RigidBodies> bodies_;
+  double time_ = 0.0;
+  long step_count_ = 0;
+  std::array<long, time_step_limit_count> limit_counts_{};
   NeighborGrid<D> grid_;
   NeighborList list_;
   std::vector<Vec<D>> position_at_build_;

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "cases/scene.hpp"
+#include "coupling/advance.hpp"
 #include "tests/cli_helpers.hpp"
 
 namespace slide::testing {
@@ -15,17 +16,14 @@ inline std::unique_ptr<cases::Scene> load_shipped_scene(const std::string& name,
   return cases::build_scene(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");
 }
 
-// Steps to the scene's end time; returns false (with a test failure) if the run goes unstable.
+// Steps to the scene's end time with the one step loop (coupling/advance.hpp); returns false (with a test failure)
+// if the run goes unstable.
 inline bool run_scene(cases::Scene& scene, const std::function<void(const Simulation<2>&)>& after_step) {
-  auto& sim = *scene.simulation;
-  while (sim.time < scene.end_time - 1e-12) {
-    auto [dt, limit] = sim.allowed_time_step();
-    if (sim.time + dt > scene.end_time) dt = scene.end_time - sim.time;
-    if (auto bad = sim.step(dt, limit)) {
-      ADD_FAILURE() << "unstable at t = " << bad->time << ": " << bad->reason;
-      return false;
-    }
-    after_step(sim);
+  AfterEveryStep<2, std::function<void(const Simulation<2>&)>> observer(after_step);
+  const AdvanceResult result = advance<2>(*scene.simulation, scene.end_time, {&observer});
+  if (result.instability) {
+    ADD_FAILURE() << "unstable at t = " << result.instability->time << ": " << result.instability->reason;
+    return false;
   }
   return true;
 }

@@ -23,7 +23,7 @@ struct FloatResult {
 FloatResult run_block(const std::vector<std::string>& overrides, const Vec<2>& placed) {
   auto scene = load_shipped_scene("floating_block_2d.yaml", overrides);
   auto& sim = *scene->simulation;
-  auto& bodies = *sim.bodies;
+  auto& bodies = *sim.bodies();
   const double g = -sim.options.gravity[1], height = 0.1;
   FloatResult r;
   r.weight = bodies.world.mass(0) * g;
@@ -37,7 +37,7 @@ FloatResult run_block(const std::vector<std::string>& overrides, const Vec<2>& p
     const auto st = bodies.state(0);
     r.max_displacement = std::max(r.max_displacement, displacement());
     // A step's force acts over its dt: weight the samples by dt (the step is variable).
-    const double dt = s.time - time_sum;
+    const double dt = s.time() - time_sum;
     time_sum += dt;
     force_sum += dt * bodies.force[0].total()[1];
     double level = 0.0;

@@ -36,7 +36,7 @@ StillTankResult run_still_tank() {
       r.max_displacement_over_dp = std::max(r.max_displacement_over_dp, (P.position[i] - start[P.id[i]]).norm() / dp);
       r.max_speed_over_sqrt_gh = std::max(r.max_speed_over_sqrt_gh, P.velocity[i].norm() / sqrt_gh);
     }
-    if (sim.time < 0.7) return;
+    if (sim.time() < 0.7) return;
     for (std::size_t i = 0; i < P.size(); ++i)
       if (P.kind[i] == Kind::wall && P.wall_normal[i][1] > 1.0 - 1e-9 && P.position[i][0] > 0 &&
           P.position[i][0] < 1.0) {

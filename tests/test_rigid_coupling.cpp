@@ -112,8 +112,8 @@ TEST(RigidCoupling, MovingBodyEntersTheCflLimit) {
   auto& sim = *scene->simulation;
   const double at_rest = sim.allowed_time_step().first;
   const double speed = 40.0;
-  sim.bodies->world.set_velocity(0, rigid::Vec2(speed, 0.0), 0.0);
-  sim.bodies->place_particles(sim.particles, sim.time);
+  sim.bodies()->world.set_velocity(0, rigid::Vec2(speed, 0.0), 0.0);
+  sim.bodies()->place_particles(sim.particles, sim.time());
   const auto [dt, limit] = sim.allowed_time_step();
   EXPECT_EQ(limit, TimeStepLimit::cfl);
   EXPECT_NEAR(dt, sim.options.cfl * sim.options.dp / (sim.options.sound_speed + speed), 1e-12);
@@ -127,10 +127,10 @@ TEST(RigidCoupling, AcceleratingBodyEntersTheForceLimit) {
   EXPECT_NE(sim.allowed_time_step().second, TimeStepLimit::force);  // at rest, no gravity: no acceleration at all
   // 2 m/s lost in 1e-5 s: 2e5 m/s^2, whose force limit 0.25 sqrt(dp / a) = 5.6e-5 s is below the CFL limit.
   const double dv = 2.0, interval = 1e-5;
-  sim.bodies->world.set_velocity(0, rigid::Vec2(dv, 0.0), 0.0);
-  sim.bodies->place_particles(sim.particles, 0.0);
-  sim.bodies->world.set_velocity(0, rigid::Vec2(0.0, 0.0), 0.0);
-  sim.bodies->place_particles(sim.particles, interval);
+  sim.bodies()->world.set_velocity(0, rigid::Vec2(dv, 0.0), 0.0);
+  sim.bodies()->place_particles(sim.particles, 0.0);
+  sim.bodies()->world.set_velocity(0, rigid::Vec2(0.0, 0.0), 0.0);
+  sim.bodies()->place_particles(sim.particles, interval);
   const auto [dt, limit] = sim.allowed_time_step();
   EXPECT_EQ(limit, TimeStepLimit::force);
   EXPECT_NEAR(dt, sim.options.force_number * std::sqrt(sim.options.dp / (dv / interval)), 1e-9 * dt);
@@ -158,8 +158,8 @@ bodies:
 )");
   auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
   auto& sim = *scene->simulation;
-  ASSERT_TRUE(sim.bodies);
-  auto& bodies = *sim.bodies;
+  ASSERT_TRUE(sim.bodies());
+  auto& bodies = *sim.bodies();
   bodies.world.set_velocity(0, rigid::Vec2(0.5, 0.2), 1.0);
   const double volume = sim.options.dp * sim.options.dp;
   auto momentum = [&]() {

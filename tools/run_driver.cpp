@@ -14,6 +14,7 @@
 #include "coupling/surge_front.hpp"
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
+#include "tools/run_outputs.hpp"
 #include "tools/snapshot_writer.hpp"
 
 namespace slide::tools {
@@ -52,39 +53,6 @@ json to_json(const YAML::Node& n) {
   }
   return s;
 }
-
-// Copies particle data in id order, the order every snapshot uses.
-struct IdOrdered {
-  std::vector<double> position, velocity, pressure, number_density, density;
-  std::vector<std::uint8_t> phase, kind;
-  std::vector<std::uint32_t> id;
-
-  explicit IdOrdered(const Particles<2>& P) {
-    const std::size_t n = P.size();
-    position.resize(2 * n);
-    velocity.resize(2 * n);
-    pressure.resize(n);
-    number_density.resize(n);
-    density.resize(n);
-    phase.resize(n);
-    kind.resize(n);
-    id.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t k = P.id[i];
-      for (int d = 0; d < 2; ++d) {
-        position[2 * k + d] = P.position[i][d];
-        velocity[2 * k + d] = P.velocity[i][d];
-      }
-      pressure[k] = P.pressure[i];
-      number_density[k] = P.number_density[i];
-      density[k] = P.density[i];
-      phase[k] = P.phase[i];
-      kind[k] = static_cast<std::uint8_t>(P.kind[i]);
-      id[k] = k;
-    }
-  }
-  SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
-};
 
 std::string limit_summary(const std::array<long, time_step_limit_count>& counts) {
   std::string s;
@@ -164,7 +132,7 @@ int check_command(const RunArguments& args) {
   for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
     const auto& b = scene->bodies[k];
     if (!b.free_while_settling || !scene->settling) continue;
-    const auto s = sim.bodies->state(static_cast<int>(k));
+    const auto s = sim.bodies()->state(static_cast<int>(k));
     std::cout << fmt::format("  settled with the water: centre ({:.6g}, {:.6g}) m, angle {:.4g} deg, {:.3g} mm from "
                              "where it was put\n",
                              s.position[0], s.position[1], s.angle * 180.0 / M_PI,
@@ -172,6 +140,54 @@ int check_command(const RunArguments& args) {
   }
   return 0;
 }
+
+namespace {
+
+// Ctrl-C stops the loop before the next step.
+class InterruptWatch : public StepObserver<2> {
+ public:
+  bool before_step(const Simulation<2>&) override { return interrupted == 0; }
+};
+
+// The state a failed run leaves as its last good snapshot: the particles every `every` steps, before the step.
+class LastGoodState : public StepObserver<2> {
+ public:
+  explicit LastGoodState(const Simulation<2>& sim) : particles(sim.particles), time(sim.time()), step(sim.step_count()) {}
+  bool before_step(const Simulation<2>& sim) override {
+    if (sim.step_count() % every == 0) {
+      particles = sim.particles;
+      time = sim.time();
+      step = sim.step_count();
+    }
+    return true;
+  }
+  static constexpr long every = 10;
+  Particles<2> particles;
+  double time;
+  long step;
+};
+
+// One progress line on standard error, refreshed every second.
+class ProgressLine : public StepObserver<2> {
+ public:
+  ProgressLine(Clock::time_point loop_start, double end_time) : start_(loop_start), end_(end_time) {}
+  void after_step(Simulation<2>& sim, double dt) override {
+    if (Clock::now() < next_) return;
+    next_ = Clock::now() + std::chrono::seconds(1);
+    const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
+    const double rate = double(sim.particles.size()) * sim.step_count() / wall;
+    const double eta = wall / sim.time() * (end_ - sim.time());
+    std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s   ",
+                             sim.time(), end_, dt, rate / 1e6, eta)
+              << std::flush;
+  }
+
+ private:
+  Clock::time_point start_, next_ = Clock::now() + std::chrono::seconds(1);
+  double end_;
+};
+
+}  // namespace
 
 int run_command(const RunArguments& args) {
   const auto setup_start = Clock::now();
@@ -185,84 +201,13 @@ int run_command(const RunArguments& args) {
   auto& sim = *scene->simulation;
   const std::filesystem::path out = args.out.empty() ? std::filesystem::path("runs") / scene->name : args.out;
   std::filesystem::create_directories(out);
-
-  std::optional<SnapshotWriter> snapshots;
-  if (scene->output.snapshots) snapshots.emplace(out);
-  std::optional<CsvWriter> gauges, front, bodies_csv;
-  const std::shared_ptr<RigidBodies> bodies = sim.bodies;
-  if (bodies)
-    bodies_csv.emplace(out / "bodies.csv",
-                       std::vector<std::string>{"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
-                                                "torque", "fx_pressure", "fy_pressure", "torque_pressure",
-                                                "fx_viscous", "fy_viscous", "torque_viscous", "fx_contact",
-                                                "fy_contact"});
-  // Forces in bodies.csv are means over the interval since the previous row (the momentum received / time).
-  auto sample_bodies = [&]() {
-    if (!bodies) return;
-    const auto mean = bodies->take_mean_forces();
-    for (std::size_t b = 0; b < bodies->size(); ++b) {
-      const auto s = bodies->state(int(b));
-      const auto& f = mean[b].fluid;
-      const auto& c = mean[b].contact;
-      const double row[] = {s.position[0], s.position[1], s.angle, s.velocity[0], s.velocity[1],
-                            s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
-                            f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
-      bodies_csv->add_labelled_row(sim.time, bodies->names[b], row);
-    }
-  };
-  if (!scene->gauges.empty()) {
-    std::vector<std::string> cols{"time"};
-    for (const auto& g : scene->gauges) cols.push_back(g.name);
-    gauges.emplace(out / "gauges.csv", cols);
-  }
-  const auto& sf = scene->surge_front;
-  if (sf.enabled)
-    front.emplace(out / "surge_front.csv",
-                  std::vector<std::string>{"time", "front", "wall_height", "T", "Z", "H_over_2a"});
-
-  auto write_snapshot = [&](const Particles<2>& P, double t, long step) {
-    if (snapshots) snapshots->write(t, step, IdOrdered(P).fields());
-  };
-  auto sample = [&]() {
-    if (gauges) {
-      std::vector<double> row{sim.time};
-      for (const auto& g : scene->gauges) row.push_back(free_surface_elevation<2>(sim, Vec<2>(g.x, 0.0)));
-      gauges->add_row(row);
-    }
-    if (front) {
-      const SurgeFront f = measure_surge_front<2>(sim, sf.wall_face_x, sf.floor_y);
-      const double a = sf.column_width, g = -sim.options.gravity[1];
-      const double T = a > 0 ? sim.time * std::sqrt(2.0 * g / a) : NAN;
-      front->add_row({sim.time, f.front, f.wall_height, T, a > 0 ? f.front / a : NAN,
-                      a > 0 ? f.wall_height / (2 * a) : NAN});
-    }
-  };
-  std::optional<CsvWriter> profiles;
-  std::size_t next_profile = 0;
-  if (!scene->profiles.times.empty()) profiles.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
-  auto sample_profiles = [&]() {
-    const auto& ps = scene->profiles;
-    while (profiles && next_profile < ps.times.size() && sim.time >= ps.times[next_profile] - 1e-12) {
-      const long n = std::lround((ps.x_max - ps.x_min) / ps.spacing);
-      for (long k = 0; k <= n; ++k) {
-        const double x = ps.x_min + (ps.x_max - ps.x_min) * k / std::max(1L, n);
-        profiles->add_row({sim.time, x, free_surface_elevation<2>(sim, Vec<2>(x, 0.0))});
-      }
-      ++next_profile;
-    }
-  };
-  auto flush_csv = [&]() {
-    if (profiles) profiles->flush();
-    if (bodies_csv) bodies_csv->flush();
-    if (gauges) gauges->flush();
-    if (front) front->flush();
-  };
+  RunOutputs outputs(*scene, out);
 
   const auto loop_start = Clock::now();
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
-    const double particle_steps = double(sim.particles.size()) * double(sim.step_count);
+    const double particle_steps = double(sim.particles.size()) * double(sim.step_count());
     json j;
     j["program"] = "slide";
     j["version"] = SLIDE_VERSION;
@@ -282,123 +227,70 @@ int run_command(const RunArguments& args) {
                     {"domain_min", {sim.options.domain_lo[0], sim.options.domain_lo[1]}},
                     {"domain_max", {sim.options.domain_hi[0], sim.options.domain_hi[1]}}};
     json limits = json::object();
-    for (std::size_t k = 0; k < sim.limit_counts.size(); ++k) limits[std::string(to_string(TimeStepLimit(k)))] = sim.limit_counts[k];
+    for (std::size_t k = 0; k < sim.limit_counts().size(); ++k)
+      limits[std::string(to_string(TimeStepLimit(k)))] = sim.limit_counts()[k];
     j["time_step_limits"] = limits;
-    j["simulated_time"] = sim.time;
-    j["steps"] = sim.step_count;
+    j["simulated_time"] = sim.time();
+    j["steps"] = sim.step_count();
     j["neighbor_rebuilds"] = sim.neighbor_rebuilds();
     j["setup_seconds"] = setup_seconds;
     j["wall_seconds"] = wall;
     j["particle_steps_per_second"] = wall > 0 ? particle_steps / wall : 0.0;
-    j["snapshots"] = snapshots ? snapshots->count() : 0;
+    j["snapshots"] = outputs.snapshot_count();
     j["scene"] = to_json(scene->resolved);
     for (auto it = extra.begin(); it != extra.end(); ++it) j[it.key()] = it.value();
     write_file_atomically(out / "run.json", j.dump(2) + "\n");
   };
 
   try {
-    // Initial state.
-    write_snapshot(sim.particles, sim.time, sim.step_count);
-    sample();
-    sample_bodies();
-    sample_profiles();
-    flush_csv();
+    outputs.write_initial();
     write_run_json("running", "", json::object());
 
     auto previous_handler = std::signal(SIGINT, on_sigint);
     interrupted = 0;
-    Particles<2> last_good = sim.particles;
-    double last_good_time = sim.time;
-    long last_good_step = sim.step_count;
-    const long save_every = 10;
-    const double snapshot_interval = scene->output.snapshot_interval;
-    double next_snapshot = snapshot_interval > 0 ? snapshot_interval : std::numeric_limits<double>::infinity();
-    double next_sample = scene->output.gauge_interval;
-    double next_body_sample = scene->body_sample_interval;
-    auto next_progress = Clock::now() + std::chrono::seconds(1);
-    const double end = scene->end_time;
-    const double eps = 1e-12 * std::max(1.0, end);
-
-    while (sim.time < end - eps) {
-      if (interrupted) {
-        std::signal(SIGINT, previous_handler);
-        write_snapshot(sim.particles, sim.time, sim.step_count);
-        flush_csv();
-        const std::string msg = fmt::format("interrupted at t = {:.6g} s (step {}); final snapshot written", sim.time,
-                                            sim.step_count);
-        write_run_json("interrupted", msg, json::object());
-        std::cerr << "\nslide: " << msg << "\n";
-        return 130;
-      }
-      if (sim.step_count % save_every == 0) {
-        last_good = sim.particles;
-        last_good_time = sim.time;
-        last_good_step = sim.step_count;
-      }
-      auto [dt, limit] = sim.allowed_time_step();
-      if (sim.time + dt >= end - eps) {
-        dt = end - sim.time;
-        limit = TimeStepLimit::end_time;
-      }
-      if (auto bad = sim.step(dt, limit)) {
-        std::signal(SIGINT, previous_handler);
-        write_snapshot(last_good, last_good_time, last_good_step);
-        flush_csv();
-        const std::string where =
-            bad->position.size() >= 2 ? fmt::format("({:.6g}, {:.6g})", bad->position[0], bad->position[1]) : "";
-        const std::string msg = fmt::format(
-            "unstable at t = {:.6g} s (step {}): particle {} at {}: {}; last good snapshot: t = {:.6g} s (step {})",
-            bad->time, bad->step, bad->particle, where, bad->reason, last_good_time, last_good_step);
-        write_run_json("unstable", msg,
-                       {{"instability",
-                         {{"time", bad->time},
-                          {"step", bad->step},
-                          {"particle", bad->particle},
-                          {"position", bad->position},
-                          {"reason", bad->reason},
-                          {"last_good_time", last_good_time},
-                          {"last_good_step", last_good_step}}}});
-        std::cerr << "\nslide: " << msg << "\n";
-        return 3;
-      }
-      if (sim.time >= next_sample - eps) {
-        sample();
-        next_sample += scene->output.gauge_interval;
-        if (sim.time >= next_sample) next_sample = sim.time + scene->output.gauge_interval;
-      }
-      sample_profiles();
-      if (bodies && sim.time >= next_body_sample - eps) {
-        sample_bodies();
-        next_body_sample += scene->body_sample_interval;
-        if (sim.time >= next_body_sample) next_body_sample = sim.time + scene->body_sample_interval;
-      }
-      if (sim.time >= next_snapshot - eps) {
-        write_snapshot(sim.particles, sim.time, sim.step_count);
-        flush_csv();
-        next_snapshot += snapshot_interval;
-        if (sim.time >= next_snapshot) next_snapshot = sim.time + snapshot_interval;
-      }
-      if (!args.quiet && Clock::now() >= next_progress) {
-        next_progress = Clock::now() + std::chrono::seconds(1);
-        const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
-        const double rate = double(sim.particles.size()) * sim.step_count / wall;
-        const double eta = wall / sim.time * (end - sim.time);
-        std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s   ",
-                                 sim.time, end, dt, rate / 1e6, eta)
-                  << std::flush;
-      }
-    }
+    InterruptWatch interrupt;
+    LastGoodState last_good(sim);
+    ProgressLine progress(loop_start, scene->end_time);
+    std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs};
+    if (!args.quiet) observers.push_back(&progress);
+    const AdvanceResult result = advance<2>(sim, scene->end_time, observers);
     std::signal(SIGINT, previous_handler);
-    if (snapshots && (snapshots->count() == 0 || snapshot_interval <= 0 || sim.time > next_snapshot - snapshot_interval + eps))
-      write_snapshot(sim.particles, sim.time, sim.step_count);
-    sample();
-    if (bodies && sim.time > next_body_sample - scene->body_sample_interval + eps) sample_bodies();
-    flush_csv();
+
+    if (result.outcome == AdvanceResult::Outcome::stopped) {
+      outputs.write_snapshot(sim.particles, sim.time(), sim.step_count());
+      outputs.flush();
+      const std::string msg = fmt::format("interrupted at t = {:.6g} s (step {}); final snapshot written", sim.time(),
+                                          sim.step_count());
+      write_run_json("interrupted", msg, json::object());
+      std::cerr << "\nslide: " << msg << "\n";
+      return 130;
+    }
+    if (const auto& bad = result.instability) {
+      outputs.write_snapshot(last_good.particles, last_good.time, last_good.step);
+      outputs.flush();
+      const std::string where =
+          bad->position.size() >= 2 ? fmt::format("({:.6g}, {:.6g})", bad->position[0], bad->position[1]) : "";
+      const std::string msg = fmt::format(
+          "unstable at t = {:.6g} s (step {}): particle {} at {}: {}; last good snapshot: t = {:.6g} s (step {})",
+          bad->time, bad->step, bad->particle, where, bad->reason, last_good.time, last_good.step);
+      write_run_json("unstable", msg,
+                     {{"instability",
+                       {{"time", bad->time},
+                        {"step", bad->step},
+                        {"particle", bad->particle},
+                        {"position", bad->position},
+                        {"reason", bad->reason},
+                        {"last_good_time", last_good.time},
+                        {"last_good_step", last_good.step}}}});
+      std::cerr << "\nslide: " << msg << "\n";
+      return 3;
+    }
+    outputs.write_final();
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     const std::string msg = fmt::format(
-        "completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}", sim.time,
-        sim.step_count, wall, double(sim.particles.size()) * sim.step_count / wall / 1e6,
-        limit_summary(sim.limit_counts));
+        "completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",
+        sim.time(), sim.step_count(), wall, double(sim.particles.size()) * sim.step_count() / wall / 1e6,
+        limit_summary(sim.limit_counts()));
     write_run_json("completed", msg, json::object());
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\rslide: " << msg << "\n";
     return 0;

@@ -1,0 +1,170 @@
+#include "tools/run_outputs.hpp"
+
+#include <cmath>
+
+#include "coupling/free_surface_gauge.hpp"
+#include "coupling/rigid_bodies.hpp"
+#include "coupling/surge_front.hpp"
+
+namespace slide::tools {
+namespace {
+
+// Copies particle data in id order, the order every snapshot uses.
+struct IdOrdered {
+  std::vector<double> position, velocity, pressure, number_density, density;
+  std::vector<std::uint8_t> phase, kind;
+  std::vector<std::uint32_t> id;
+
+  explicit IdOrdered(const Particles<2>& P) {
+    const std::size_t n = P.size();
+    position.resize(2 * n);
+    velocity.resize(2 * n);
+    pressure.resize(n);
+    number_density.resize(n);
+    density.resize(n);
+    phase.resize(n);
+    kind.resize(n);
+    id.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t k = P.id[i];
+      for (int d = 0; d < 2; ++d) {
+        position[2 * k + d] = P.position[i][d];
+        velocity[2 * k + d] = P.velocity[i][d];
+      }
+      pressure[k] = P.pressure[i];
+      number_density[k] = P.number_density[i];
+      density[k] = P.density[i];
+      phase[k] = P.phase[i];
+      kind[k] = static_cast<std::uint8_t>(P.kind[i]);
+      id[k] = k;
+    }
+  }
+  SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
+};
+
+// The next time of a periodic sample after one taken now: one interval on, or from now if the run jumped past it.
+double next_after(double next, double interval, double now) {
+  next += interval;
+  return now >= next ? now + interval : next;
+}
+
+}  // namespace
+
+RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& out)
+    : scene_(scene), sim_(*scene.simulation) {
+  if (scene.output.snapshots) snapshots_.emplace(out);
+  if (sim_.bodies())
+    bodies_.emplace(out / "bodies.csv",
+                    std::vector<std::string>{"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
+                                             "torque", "fx_pressure", "fy_pressure", "torque_pressure", "fx_viscous",
+                                             "fy_viscous", "torque_viscous", "fx_contact", "fy_contact"});
+  if (!scene.gauges.empty()) {
+    std::vector<std::string> cols{"time"};
+    for (const auto& g : scene.gauges) cols.push_back(g.name);
+    gauges_.emplace(out / "gauges.csv", cols);
+  }
+  if (scene.surge_front.enabled)
+    front_.emplace(out / "surge_front.csv",
+                   std::vector<std::string>{"time", "front", "wall_height", "T", "Z", "H_over_2a"});
+  if (!scene.profiles.times.empty())
+    profiles_.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
+  eps_ = 1e-12 * std::max(1.0, scene.end_time);
+  if (scene.output.snapshot_interval > 0) next_snapshot_ = scene.output.snapshot_interval;
+  next_sample_ = scene.output.gauge_interval;
+  next_body_sample_ = scene.body_sample_interval;
+}
+
+void RunOutputs::write_snapshot(const Particles<2>& P, double time, long step) {
+  if (snapshots_) snapshots_->write(time, step, IdOrdered(P).fields());
+}
+
+// Gauges and the surge front.
+void RunOutputs::sample() {
+  if (gauges_) {
+    std::vector<double> row{sim_.time()};
+    for (const auto& g : scene_.gauges) row.push_back(free_surface_elevation<2>(sim_, Vec<2>(g.x, 0.0)));
+    gauges_->add_row(row);
+  }
+  if (front_) {
+    const auto& sf = scene_.surge_front;
+    const SurgeFront f = measure_surge_front<2>(sim_, sf.wall_face_x, sf.floor_y);
+    const double a = sf.column_width, g = -sim_.options.gravity[1];
+    const double T = a > 0 ? sim_.time() * std::sqrt(2.0 * g / a) : NAN;
+    front_->add_row({sim_.time(), f.front, f.wall_height, T, a > 0 ? f.front / a : NAN,
+                     a > 0 ? f.wall_height / (2 * a) : NAN});
+  }
+}
+
+// Forces in bodies.csv are means over the interval since the previous row (the momentum received / time).
+void RunOutputs::sample_bodies() {
+  const auto& bodies = sim_.bodies();
+  if (!bodies) return;
+  const auto mean = bodies->take_mean_forces();
+  for (std::size_t b = 0; b < bodies->size(); ++b) {
+    const auto s = bodies->state(int(b));
+    const auto& f = mean[b].fluid;
+    const auto& c = mean[b].contact;
+    const double row[] = {s.position[0], s.position[1], s.angle, s.velocity[0], s.velocity[1],
+                          s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
+                          f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
+    bodies_->add_labelled_row(sim_.time(), bodies->names[b], row);
+  }
+}
+
+// Each profile is taken at the first step at or after its time.
+void RunOutputs::sample_profiles() {
+  const auto& ps = scene_.profiles;
+  while (profiles_ && next_profile_ < ps.times.size() && sim_.time() >= ps.times[next_profile_] - 1e-12) {
+    const long n = std::lround((ps.x_max - ps.x_min) / ps.spacing);
+    for (long k = 0; k <= n; ++k) {
+      const double x = ps.x_min + (ps.x_max - ps.x_min) * k / std::max(1L, n);
+      profiles_->add_row({sim_.time(), x, free_surface_elevation<2>(sim_, Vec<2>(x, 0.0))});
+    }
+    ++next_profile_;
+  }
+}
+
+void RunOutputs::flush() {
+  if (profiles_) profiles_->flush();
+  if (bodies_) bodies_->flush();
+  if (gauges_) gauges_->flush();
+  if (front_) front_->flush();
+}
+
+void RunOutputs::write_initial() {
+  write_snapshot(sim_.particles, sim_.time(), sim_.step_count());
+  sample();
+  sample_bodies();
+  sample_profiles();
+  flush();
+}
+
+void RunOutputs::after_step(Simulation<2>& sim, double) {
+  const double t = sim.time();
+  if (t >= next_sample_ - eps_) {
+    sample();
+    next_sample_ = next_after(next_sample_, scene_.output.gauge_interval, t);
+  }
+  sample_profiles();
+  if (bodies_ && t >= next_body_sample_ - eps_) {
+    sample_bodies();
+    next_body_sample_ = next_after(next_body_sample_, scene_.body_sample_interval, t);
+  }
+  if (t >= next_snapshot_ - eps_) {
+    write_snapshot(sim.particles, t, sim.step_count());
+    flush();
+    next_snapshot_ = next_after(next_snapshot_, scene_.output.snapshot_interval, t);
+  }
+}
+
+void RunOutputs::write_final() {
+  const double interval = scene_.output.snapshot_interval;
+  const double t = sim_.time();
+  if (snapshots_ && (snapshots_->count() == 0 || interval <= 0 || t > next_snapshot_ - interval + eps_))
+    write_snapshot(sim_.particles, t, sim_.step_count());
+  sample();
+  if (bodies_ && t > next_body_sample_ - scene_.body_sample_interval + eps_) sample_bodies();
+  flush();
+}
+
+}  // namespace slide::tools

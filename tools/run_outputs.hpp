@@ -1,0 +1,45 @@
+#pragma once
+// What a run writes while it goes (DESIGN.md, "Command line and outputs"): snapshots, gauges, the surge front,
+// profiles and bodies.csv, each at its scene-set interval. One observer of the step loop (coupling/advance.hpp).
+#include <filesystem>
+#include <limits>
+#include <optional>
+
+#include "cases/scene.hpp"
+#include "coupling/advance.hpp"
+#include "tools/atomic_file.hpp"
+#include "tools/snapshot_writer.hpp"
+
+namespace slide::tools {
+
+class RunOutputs : public StepObserver<2> {
+ public:
+  RunOutputs(const cases::Scene& scene, const std::filesystem::path& out);
+
+  // Writes the initial state (snapshot and first samples) and flushes.
+  void write_initial();
+  void after_step(Simulation<2>& sim, double dt) override;
+  // At the end of a completed run: the final snapshot and samples not yet taken.
+  void write_final();
+
+  void write_snapshot(const Particles<2>& P, double time, long step);
+  void flush();
+  std::size_t snapshot_count() const { return snapshots_ ? snapshots_->count() : 0; }
+
+ private:
+  void sample();
+  void sample_bodies();
+  void sample_profiles();
+
+  const cases::Scene& scene_;
+  const Simulation<2>& sim_;
+  std::optional<SnapshotWriter> snapshots_;
+  std::optional<CsvWriter> gauges_, front_, bodies_, profiles_;
+  std::size_t next_profile_ = 0;
+  double eps_ = 0.0;
+  double next_snapshot_ = std::numeric_limits<double>::infinity();
+  double next_sample_ = 0.0;
+  double next_body_sample_ = 0.0;
+};
+
+}  // namespace slide::tools
