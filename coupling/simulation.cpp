@@ -16,6 +16,8 @@ template <int D>
 void Simulation<D>::initialise() {
   const double dp = options.dp;
   lattice = lattice_constants<D>(dp, re(), options.lattice);
+  rheology_ = false;
+  for (const auto& ph : phases) rheology_ = rheology_ || !std::holds_alternative<Newtonian>(ph.rheology);
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   grid_ = NeighborGrid<D>(options.domain_lo, options.domain_hi, re() + options.skin_over_dp * dp);
   scratch_.assign(particles.size(), Vec<D>::Zero());
@@ -37,6 +39,7 @@ void Simulation<D>::restart_at_rest() {
   time_ = 0.0;
   step_count_ = 0;
   limit_counts_ = {};
+  viscous_solves_ = {};
   initialise();
 }
 
@@ -126,7 +129,7 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
     if (dt < best.first) best = {dt, l};
   };
   consider(options.cfl * dp / (options.sound_speed + u_max), TimeStepLimit::cfl);
-  if (nu_max > 0.0) consider(options.viscous_number * dp * dp / nu_max, TimeStepLimit::viscous);
+  if (nu_max > 0.0 && options.viscous_scheme == ViscousScheme::explicit_) consider(options.viscous_number * dp * dp / nu_max, TimeStepLimit::viscous);
   if (a_max > 0.0) consider(options.force_number * std::sqrt(dp / a_max), TimeStepLimit::force);
   return best;
 }
@@ -134,6 +137,7 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
 template <int D>
 std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   update_neighbors(false);
+  update_viscosity();
   predict_with_viscosity_and_gravity(dt);
   compute_pressure();  // at the predicted positions
   correct_with_pressure_gradient(dt);
@@ -145,29 +149,85 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   return check();
 }
 
-// Explicit part: viscosity and gravity give the predicted velocity and position (fluid only). Body particles' share
-// of the viscous term goes to their bodies.
+// Rheology: each fluid particle's viscosity from its phase's model at its shear rate (fluid/strain_rate.hpp, walls
+// mirrored as in the viscous term) and its pressure, both of the start of the step (the viscosity is lagged).
 template <int D>
-void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
+void Simulation<D>::update_viscosity() {
+  if (!rheology_) return;
   auto& P = particles;
   const double r_e = re();
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
-    Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip);
-    if (options.artificial_viscosity > 0.0)
-      a += artificial_viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, options.artificial_viscosity,
-                                              options.sound_speed, options.dp);
-    P.acceleration[i] = a + options.gravity;
+    const Rheology& model = phases[P.phase[i]].rheology;
+    if (std::holds_alternative<Newtonian>(model)) return;
+    const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.wall_slip);
+    P.viscosity[i] = effective_viscosity(model, rate, P.pressure[i]);
   });
+}
+
+// Viscosity and gravity give the predicted velocity and position (fluid only). Explicitly, the viscous term is
+// evaluated at the velocities of the start of the step; semi-implicitly (fluid/implicit_viscosity.hpp) at the
+// solution u~ of the implicit system. Either way the same pair terms then update the fluid and, for body particles,
+// go to their bodies (before the positions move), so momentum is exchanged exactly whatever the solver's tolerance:
+// u* = u + dt (a + a_visc(u~)) differs from u~ only by the solver's residual.
+template <int D>
+void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
+  auto& P = particles;
+  const double r_e = re();
+  const bool implicit = options.viscous_scheme == ViscousScheme::implicit;
+  if (implicit) {
+    // Explicit accelerations first: gravity and artificial viscosity.
+    parallel_for(P.size(), [&](std::size_t i) {
+      if (P.kind[i] != Kind::fluid) return;
+      Vec<D> a = options.gravity;
+      if (options.artificial_viscosity > 0.0)
+        a += artificial_viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, options.artificial_viscosity,
+                                                options.sound_speed, options.dp);
+      P.acceleration[i] = a;
+    });
+    start_velocity_.assign(P.velocity.begin(), P.velocity.end());
+    implicit_viscosity_.tolerance = options.implicit_tolerance;
+    last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip,
+                                                       dt, P.acceleration);
+    record(last_viscous_solve_);
+    parallel_for(P.size(), [&](std::size_t i) {
+      scratch_[i] = P.kind[i] == Kind::fluid
+                        ? viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip)
+                        : Vec<D>::Zero();
+    });
+  } else {
+    parallel_for(P.size(), [&](std::size_t i) {
+      if (P.kind[i] != Kind::fluid) return;
+      Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip);
+      if (options.artificial_viscosity > 0.0)
+        a += artificial_viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, options.artificial_viscosity,
+                                                options.sound_speed, options.dp);
+      P.acceleration[i] = a + options.gravity;
+    });
+  }
   if constexpr (D == 2) {
     if (bodies_)
       bodies_->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip, particle_volume());
   }
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
+    if (implicit) {
+      P.acceleration[i] += scratch_[i];
+      P.velocity[i] = start_velocity_[i];
+    }
     P.velocity[i] += dt * P.acceleration[i];
     P.position[i] += dt * P.velocity[i];
   });
+}
+
+template <int D>
+void Simulation<D>::record(const ViscousSolveReport& r) {
+  auto& s = viscous_solves_;
+  ++s.solves;
+  s.iterations += r.iterations;
+  s.most_iterations = std::max(s.most_iterations, r.iterations);
+  s.largest_residual = std::max(s.largest_residual, r.residual);
+  if (!r.converged) ++s.unconverged;
 }
 
 // Pressure-gradient correction of velocity and position (and the settling's damping, when on).

@@ -13,15 +13,26 @@
 #include "fluid/equation_of_state.hpp"
 #include "fluid/fluid_options.hpp"
 #include "fluid/gradient.hpp"
+#include "fluid/implicit_viscosity.hpp"
 #include "fluid/kernel.hpp"
 #include "fluid/lattice.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
+#include "fluid/phase.hpp"
 #include "fluid/viscosity.hpp"
 
 namespace slide {
 
 class RigidBodies;  // coupling/rigid_bodies.hpp (2-D scenes)
+
+// What the semi-implicit viscous stage has solved so far (run.json reports it).
+struct ViscousSolveStats {
+  long solves = 0;
+  long iterations = 0;      // summed over solves
+  int most_iterations = 0;  // in one solve
+  double largest_residual = 0.0;
+  long unconverged = 0;     // solves that stopped at the iteration cap
+};
 
 struct Instability {
   std::string reason;     // what went wrong
@@ -36,6 +47,9 @@ class Simulation {
  public:
   Particles<D> particles;
   FluidOptions<D> options;
+  // The phases particles refer to (Particles::phase). With any non-Newtonian phase, every fluid particle's viscosity
+  // is set from its phase's rheology at the start of each step; empty: viscosities stay as the particles were made.
+  std::vector<Phase> phases;
 
   // Derived at initialise(): lattice constants, equation of state, grid.
   LatticeConstants lattice;
@@ -75,6 +89,8 @@ class Simulation {
   const NeighborList& neighbors() const { return list_; }
   const NeighborGrid<D>& grid() const { return grid_; }
   long neighbor_rebuilds() const { return rebuilds_; }
+  const ViscousSolveStats& viscous_solves() const { return viscous_solves_; }
+  const ViscousSolveReport& last_viscous_solve() const { return last_viscous_solve_; }
   double max_fluid_speed() const;
 
   // Fluid number density at an arbitrary point (fluid particles only), for free-surface detection by gauges.
@@ -83,6 +99,8 @@ class Simulation {
  private:
   // The stages of one step (DESIGN.md, "The step loop").
   void update_neighbors(bool force);
+  void update_viscosity();
+  void record(const ViscousSolveReport& r);
   void predict_with_viscosity_and_gravity(double dt);
   void compute_pressure();
   void correct_with_pressure_gradient(double dt);
@@ -99,7 +117,12 @@ class Simulation {
   NeighborList list_;
   std::vector<Vec<D>> position_at_build_;
   std::vector<Vec<D>> scratch_;
+  std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
+  bool rheology_ = false;  // some phase is non-Newtonian
+  ImplicitViscosity implicit_viscosity_;
+  ViscousSolveStats viscous_solves_;
+  ViscousSolveReport last_viscous_solve_;
 };
 
 extern template class Simulation<2>;

@@ -2,10 +2,20 @@
 // The numerical method's settings (scene keys `particle_spacing`, `lattice` and `method.*`).
 #include "fluid/gradient.hpp"
 #include "fluid/lattice.hpp"
+#include "fluid/name_table.hpp"
 #include "fluid/viscosity.hpp"
 #include "fluid/wall_pressure.hpp"
 
 namespace slide {
+
+// How the viscous term is integrated: explicit (its own time-step limit, viscous_number dp^2 / nu_max) or
+// semi-implicit (viscosity lagged, one SPD solve per step; fluid/implicit_viscosity.hpp; no viscous limit).
+enum class ViscousScheme { explicit_, implicit };
+
+inline constexpr auto viscous_scheme_names = make_name_table<ViscousScheme>(
+    std::pair{ViscousScheme::explicit_, "explicit"}, std::pair{ViscousScheme::implicit, "implicit"});
+
+inline std::string_view to_string(ViscousScheme s) { return viscous_scheme_names.name(s); }
 
 struct MethodOptions {
   double dp = 0.01;                 // particle spacing, m
@@ -18,6 +28,8 @@ struct MethodOptions {
   double free_surface_beta = 0.97;  // n < beta n0: free-surface particle, pressure set to zero
   bool clamp_negative_pressure = true;
   WallSlip wall_slip = WallSlip::no_slip;
+  ViscousScheme viscous_scheme = ViscousScheme::explicit_;
+  double implicit_tolerance = 1e-8;  // relative residual of the semi-implicit viscous solve
   WallPressure wall_pressure = WallPressure::mirror;
   double artificial_viscosity = 0.0;  // Monaghan alpha; 0 = off
   double collision_distance_over_dp = 0.5;  // collision model (fluid/collision.hpp); 0 = off
