@@ -98,13 +98,13 @@ void RigidBodies::exchange(const Particles<2>& P, const NeighborList& nl, bool v
 
 // Viscous force of body particle j on fluid i: m_i scale_i term_ij; the body gets minus it.
 void RigidBodies::add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0,
-                                     double lambda, WallSlip slip, double volume) {
+                                     double lambda, const ViscousWall& wall, double volume) {
   const double re2 = re * re;
   exchange(P, nl, true, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
     const double r2 = distance_squared<2>(P.position[j], P.position[i]);
     if (r2 >= re2) return Vec<2>::Zero();
     const double mass = P.density[i] * volume;
-    return -(mass * viscous_scale<2>(i, P, n0, lambda)) * viscous_pair_term<2>(i, j, r2, P, re, slip);
+    return -(mass * viscous_scale<2>(i, P, n0, lambda)) * viscous_pair_term<2>(i, j, r2, P, re, wall);
   });
 }
 

@@ -62,7 +62,7 @@ class RigidBodies {
 
   // The three exchanges, each called where the fluid computes the same pair terms, before the fluid's update.
   void add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0, double lambda,
-                          WallSlip slip, double volume);
+                          const ViscousWall& wall, double volume);
   void add_pressure_forces(const Particles<2>& P, const NeighborList& nl, GradientModel model, double re, double n0,
                            double kappa, double volume);
   void add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance, double restitution,

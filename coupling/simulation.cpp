@@ -160,7 +160,7 @@ void Simulation<D>::update_viscosity() {
     if (P.kind[i] != Kind::fluid) return;
     const Rheology& model = phases[P.phase[i]].rheology;
     if (std::holds_alternative<Newtonian>(model)) return;
-    const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.wall_slip);
+    const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.viscous_wall());
     P.viscosity[i] = effective_viscosity(model, rate, P.pressure[i]);
   });
 }
@@ -187,18 +187,18 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     });
     start_velocity_.assign(P.velocity.begin(), P.velocity.end());
     implicit_viscosity_.tolerance = options.implicit_tolerance;
-    last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip,
+    last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(),
                                                        dt, P.acceleration);
     record(last_viscous_solve_);
     parallel_for(P.size(), [&](std::size_t i) {
       scratch_[i] = P.kind[i] == Kind::fluid
-                        ? viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip)
+                        ? viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall())
                         : Vec<D>::Zero();
     });
   } else {
     parallel_for(P.size(), [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) return;
-      Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip);
+      Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall());
       if (options.artificial_viscosity > 0.0)
         a += artificial_viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, options.artificial_viscosity,
                                                 options.sound_speed, options.dp);
@@ -207,7 +207,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
   }
   if constexpr (D == 2) {
     if (bodies_)
-      bodies_->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.wall_slip, particle_volume());
+      bodies_->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(), particle_volume());
   }
   parallel_for(P.size(), [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;

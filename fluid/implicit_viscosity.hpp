@@ -8,7 +8,7 @@
 // set by the CFL limit alone.
 //
 // For every fluid particle i (c = 2d / (lambda n0), seed eq. 4; mu_ij the harmonic mean across a pair; walls
-// mirrored as in viscous_pair_term, factor f_ij = 1 + d_j / d_i capped at 1.5, with the wall's velocity u_b):
+// mirrored as in viscous_pair_term, factor f_ij = no_slip_mirror_factor, with the wall's velocity u_b):
 //   rho_i u*_i - dt c [ sum_fluid mu_ij W_ij (u*_j - u*_i) + sum_wall mu_i f_ij W_ij (u_b,j - u*_i) ]
 //       = rho_i (u_i + dt a_i),
 // a_i the explicit accelerations (gravity, artificial viscosity). Multiplied by rho_i (not divided), the matrix is
@@ -49,8 +49,8 @@ class ImplicitViscosity {
   // Replaces P.velocity of every fluid particle by u* (above); `explicit_acceleration` holds a_i for fluid particles.
   // Positions are not moved. Particles other than fluid keep their velocities.
   template <int D>
-  ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda, WallSlip slip,
-                           double dt, const std::vector<Vec<D>>& explicit_acceleration);
+  ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda,
+                           const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration);
 
  private:
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
@@ -62,7 +62,7 @@ class ImplicitViscosity {
 
 template <int D>
 ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList& nl, double re, double n0,
-                                            double lambda, WallSlip slip, double dt,
+                                            double lambda, const ViscousWall& wall, double dt,
                                             const std::vector<Vec<D>>& explicit_acceleration) {
   const std::size_t n = P.size();
   row_of_.assign(n, -1);
@@ -114,10 +114,10 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
         const double a = dt * c * mu_ij * w;
         diagonal += a;
         entries.emplace_back(row_of_[j], -a);
-      } else if (slip == WallSlip::no_slip) {
+      } else if (wall.slip == WallSlip::no_slip) {
         const double d_j = P.wall_depth[j];
         const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-        const double a = dt * c * mu_i * no_slip_mirror_factor(d_i, d_j) * w;
+        const double a = dt * c * mu_i * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w;
         diagonal += a;
         b += a * P.velocity[j];
       }

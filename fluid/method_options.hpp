@@ -35,6 +35,10 @@ struct MethodOptions {
   double collision_distance_over_dp = 0.5;  // collision model (fluid/collision.hpp); 0 = off
   double collision_restitution = 0.2;
   double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while settling
+
+  // The wall condition of the viscous term and the strain rate: no-slip mirrors clip a particle's distance from the
+  // face at dp / 2, the first lattice row's (fluid/viscosity.hpp, no_slip_mirror_factor).
+  ViscousWall viscous_wall() const { return {wall_slip, 0.5 * dp}; }
 };
 
 }  // namespace slide

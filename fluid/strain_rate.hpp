@@ -11,22 +11,15 @@
 
 namespace slide {
 
-// The no-slip mirror of fluid/viscosity.hpp (viscous_pair_term, Morris, Fox & Zhu 1997): a boundary particle at
-// depth d_j behind its face carries, as seen from a fluid particle at distance d_i in front of the face, the
-// velocity mirrored through the face, u_j,eff = u_b - (d_j / d_i)(u_i - u_b), u_b the boundary's own velocity. So
-//   u_j,eff - u_i = (1 + d_j / d_i)(u_b - u_i),
-// with the factor 1 + d_j / d_i capped at 1.5 where d_i <= 2 d_j (particles very near the face, or past it): the same
-// expression as viscous_pair_term, so that the shear rate and the viscous force see the same wall.
-inline double no_slip_mirror_factor(double d_i, double d_j) { return d_i > d_j / 0.5 ? 1.0 + d_j / d_i : 1.5; }
-
-// u_j,eff - u_i for neighbour j of fluid particle i: u_j - u_i for a fluid neighbour, the mirrored difference above
+// u_j,eff - u_i for neighbour j of fluid particle i: u_j - u_i for a fluid neighbour, the no-slip mirror of
+// fluid/viscosity.hpp (no_slip_mirror_factor), the same as the viscous term's,
 // for a boundary neighbour (wall or dummy).
 template <int D>
-inline Vec<D> velocity_difference(std::size_t i, std::uint32_t j, const Particles<D>& P) {
+inline Vec<D> velocity_difference(std::size_t i, std::uint32_t j, const Particles<D>& P, double min_distance) {
   if (P.kind[j] == Kind::fluid) return P.velocity[j] - P.velocity[i];
   const double d_j = P.wall_depth[j];
   const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-  return no_slip_mirror_factor(d_i, d_j) * (P.velocity[j] - P.velocity[i]);
+  return no_slip_mirror_factor(d_i, d_j, min_distance) * (P.velocity[j] - P.velocity[i]);
 }
 
 // Velocity gradient L_ab = du_a / dx_b of fluid particle i, seed eq. 3 (the MPS gradient, Koshizuka & Oka 1996)
@@ -39,16 +32,16 @@ inline Vec<D> velocity_difference(std::size_t i, std::uint32_t j, const Particle
 // disordered region, or at a free-slip wall it is not.
 template <int D>
 Mat<D> velocity_gradient(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
-                         WallSlip slip) {
+                         const ViscousWall& wall) {
   const double re2 = re * re;
   Mat<D> L = Mat<D>::Zero();
   for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
     const std::uint32_t j = *q;
-    if (P.kind[j] != Kind::fluid && slip == WallSlip::free_slip) continue;
+    if (P.kind[j] != Kind::fluid && wall.slip == WallSlip::free_slip) continue;
     const Vec<D> rij = P.position[j] - P.position[i];
     const double r2 = rij.squaredNorm();
     if (r2 >= re2) continue;
-    L += (kernel_weight(std::sqrt(r2), re) / r2) * velocity_difference<D>(i, j, P) * rij.transpose();
+    L += (kernel_weight(std::sqrt(r2), re) / r2) * velocity_difference<D>(i, j, P, wall.min_distance) * rij.transpose();
   }
   return (D / n0) * L;
 }
@@ -64,8 +57,9 @@ double shear_rate_of(const Mat<D>& L) {
 
 // The shear rate of fluid particle i, 1/s.
 template <int D>
-double shear_rate(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0, WallSlip slip) {
-  return shear_rate_of<D>(velocity_gradient<D>(i, P, nl, re, n0, slip));
+double shear_rate(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
+                  const ViscousWall& wall) {
+  return shear_rate_of<D>(velocity_gradient<D>(i, P, nl, re, n0, wall));
 }
 
 }  // namespace slide

@@ -64,7 +64,7 @@ TEST(ImplicitViscosity, SolutionSatisfiesTheExplicitOperatorAtTheNewVelocities) 
     const double dt = 1e-3;  // 50x the explicit limit of the sediment (0.1 dp^2 / nu = 1e-4 * 1950 / 20 s)
     ImplicitViscosity solver;
     solver.tolerance = 1e-12;
-    const ViscousSolveReport report = solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, slip, dt,
+    const ViscousSolveReport report = solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{slip, 0.5 * patch.dp}, dt,
                                                       patch.accel);
     EXPECT_TRUE(report.converged);
     EXPECT_GT(report.iterations, 0);
@@ -74,7 +74,7 @@ TEST(ImplicitViscosity, SolutionSatisfiesTheExplicitOperatorAtTheNewVelocities) 
         EXPECT_EQ(P.velocity[i], u0[i]);  // boundaries keep their velocities
         continue;
       }
-      const Vec<2> a = viscous_acceleration<2>(i, P, patch.list, patch.re, patch.c.n0, patch.c.lambda, slip);
+      const Vec<2> a = viscous_acceleration<2>(i, P, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{slip, 0.5 * patch.dp});
       const Vec<2> r = P.velocity[i] - dt * a - (u0[i] + dt * patch.accel[i]);
       worst = std::max(worst, r.norm());
       scale = std::max(scale, (u0[i] + dt * patch.accel[i]).norm());
@@ -93,7 +93,7 @@ TEST(ImplicitViscosity, ConservesMomentumBetweenFluidParticles) {
   for (std::size_t i = 0; i < P.size(); ++i) before += P.density[i] * P.velocity[i];
   ImplicitViscosity solver;
   solver.tolerance = 1e-13;
-  solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, WallSlip::no_slip, 1e-2, patch.accel);
+  solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{WallSlip::no_slip, 0.5 * patch.dp}, 1e-2, patch.accel);
   double scale = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     after += P.density[i] * P.velocity[i];
@@ -113,7 +113,7 @@ TEST(ImplicitViscosity, StaysBoundedWhereTheExplicitStepWouldExplode) {
   for (const auto& u : P.velocity) start = std::max(start, u.cwiseAbs().maxCoeff());
   ImplicitViscosity solver;
   const auto report =
-      solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, WallSlip::no_slip, 0.1, patch.accel);
+      solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{WallSlip::no_slip, 0.5 * patch.dp}, 0.1, patch.accel);
   EXPECT_TRUE(report.converged);
   double end = 0.0, mean_x = 0.0;
   for (const auto& u : P.velocity) end = std::max(end, u.cwiseAbs().maxCoeff());

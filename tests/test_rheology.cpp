@@ -2,6 +2,8 @@
 // regular lattices and next to a no-slip floor.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -264,7 +266,7 @@ struct Block {
     for (std::size_t i = 0; i < particles.size(); ++i) {
       if (!interior(i)) continue;
       ++checked;
-      EXPECT_NEAR(shear_rate<D>(i, particles, list, re, constants.n0, WallSlip::no_slip), exact, 1e-9 * scale) << i;
+      EXPECT_NEAR(shear_rate<D>(i, particles, list, re, constants.n0, ViscousWall{WallSlip::no_slip, 0.5 * dp}), exact, 1e-9 * scale) << i;
     }
     return checked;
   }
@@ -281,7 +283,7 @@ void expect_exact_shear_rates(LatticeKind kind) {
     if (B.interior(i)) {
       Mat<D> exact = Mat<D>::Zero();
       exact(0, 1) = gamma;
-      const Mat<D> L = velocity_gradient<D>(i, B.particles, B.list, B.re, B.constants.n0, WallSlip::no_slip);
+      const Mat<D> L = velocity_gradient<D>(i, B.particles, B.list, B.re, B.constants.n0, ViscousWall{WallSlip::no_slip, 0.5 * B.dp});
       EXPECT_NEAR((L - exact).norm(), 0.0, 1e-9 * gamma) << i;
     }
   // Pure extension u = (a x, -a y): D = diag(a, -a), sqrt(2 D:D) = 2a.
@@ -329,16 +331,6 @@ struct Channel {
     const auto& x = P.position[i];
     return P.kind[i] == Kind::fluid && x[0] > re && x[0] < columns * dp - re && x[1] < rows * dp - re;
   }
-  // Whether the mirror's cap acts on some boundary neighbour of i (d_i <= 2 d_j).
-  bool capped(std::size_t i) const {
-    for (const std::uint32_t* q = list.begin(i); q != list.end(i); ++q) {
-      const std::uint32_t j = *q;
-      if (P.kind[j] == Kind::fluid || distance_squared<2>(P.position[i], P.position[j]) >= re * re) continue;
-      const double d_j = P.wall_depth[j], d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-      if (!(d_i > 2.0 * d_j)) return true;
-    }
-    return false;
-  }
 };
 
 TEST(StrainRate, PolylineFloorIsBelowTheFluid) {
@@ -365,8 +357,8 @@ TEST(StrainRate, WallMirrorAgreesWithViscousPairTerm) {
       const double r2 = distance_squared<2>(C.P.position[i], C.P.position[j]);
       if (C.P.kind[j] == Kind::fluid || r2 >= C.re * C.re) continue;
       C.P.viscosity[i] = 1.0;
-      const Vec<2> force = viscous_pair_term<2>(i, j, r2, C.P, C.re, WallSlip::no_slip);
-      const Vec<2> mirrored = kernel_weight(std::sqrt(r2), C.re) * velocity_difference<2>(i, j, C.P);
+      const Vec<2> force = viscous_pair_term<2>(i, j, r2, C.P, C.re, ViscousWall{WallSlip::no_slip, 0.5 * C.dp});
+      const Vec<2> mirrored = kernel_weight(std::sqrt(r2), C.re) * velocity_difference<2>(i, j, C.P, 0.5 * C.dp);
       EXPECT_NEAR((force - mirrored).norm(), 0.0, 1e-15 * (1.0 + force.norm()));
       ++pairs;
     }
@@ -374,60 +366,31 @@ TEST(StrainRate, WallMirrorAgreesWithViscousPairTerm) {
   EXPECT_GT(pairs, 0);
 }
 
-// No-slip floor: where the cap does not act, the mirrored wall velocity -(d_j / d_i) u_i = -gamma d_j is exactly the
-// linear field continued below the face (gamma y_j), so the shear rate is exact. In the first rows the cap (1.5 in
-// place of 1 + d_j / d_i) gives the wall less velocity difference than the linear continuation and the shear rate is
-// lower. Measured figures asserted to 1e-9 (relative to gamma):
-//  * re = 2.1 dp (the default): row 0 (y = dp/2) only; its wall neighbours at depths dp/2 (r = dp, sqrt 2 dp) and
-//    3 dp/2 (r = 2 dp) all have d_i = dp/2 <= 2 d_j. 0.8748867 gamma, which is the closed form
-//      1 - (2 / n0) [W(dp) / 4 + W(sqrt 2 dp) / 4 + 5 W(2 dp) / 8]
-//    (each capped neighbour's difference from the linear field, (1 + d_j/d_i - 1.5) gamma d_i, times r_y W / r^2).
-//  * re = 3.1 dp: rows 0 and 1 (row 1's neighbour below at depth 3 dp/2 is capped; its depth-dp/2 layer is not).
-void expect_floor_shear_rates(double re_over_dp, const std::vector<int>& capped_rows,
-                              const std::vector<double>& measured) {
+// No-slip floor: the mirrored wall velocity -(d_j / d_i) u_i = -gamma d_j is exactly the linear field continued below
+// the face (gamma y_j), so the shear rate is exact in every row, the first (d_i = dp/2, at the clip) included, for
+// the default kernel and a wider one. (With Morris et al.'s cap of the factor at 1.5, the first row read
+// 0.8748867 gamma at re = 2.1 dp, and rows 0 and 1 0.848222 and 0.9999925 gamma at re = 3.1 dp.)
+void expect_floor_shear_rates_exact(double re_over_dp) {
   const Channel C(re_over_dp);
-  std::vector<int> seen_rows;
-  int exact_count = 0;
+  std::set<int> rows;
   for (std::size_t i = 0; i < C.P.size(); ++i) {
     if (!C.tested(i)) continue;
-    const double g = shear_rate<2>(i, C.P, C.list, C.re, C.constants.n0, WallSlip::no_slip);
-    const int row = C.row(i);
-    if (!C.capped(i)) {
-      EXPECT_NEAR(g, C.gamma, 1e-9 * C.gamma) << "row " << row;
-      ++exact_count;
-      continue;
-    }
-    if (std::find(seen_rows.begin(), seen_rows.end(), row) == seen_rows.end()) seen_rows.push_back(row);
-    ASSERT_LT(static_cast<std::size_t>(row), measured.size());
-    EXPECT_NEAR(g / C.gamma, measured[row], 1e-9) << "re/dp " << re_over_dp << " row " << row << ": "
-                                                  << testing::PrintToString(g / C.gamma);
+    const double g = shear_rate<2>(i, C.P, C.list, C.re, C.constants.n0, ViscousWall{WallSlip::no_slip, 0.5 * C.dp});
+    EXPECT_NEAR(g, C.gamma, 1e-9 * C.gamma) << "row " << C.row(i);
+    rows.insert(C.row(i));
   }
-  std::sort(seen_rows.begin(), seen_rows.end());
-  EXPECT_EQ(seen_rows, capped_rows);
-  EXPECT_GT(exact_count, 0);
+  EXPECT_TRUE(rows.count(0) && rows.count(1));
 }
 
-TEST(StrainRate, NoSlipFloorDefaultKernel) {
-  // The measured figure, and the closed form of the comment above from the kernel alone.
-  const double measured = 0.87488667459064517;
-  const double dp = 0.1, re = 2.1 * dp;
-  const double n0 = lattice_constants<2>(dp, re).n0;
-  const double closed = 1.0 - (2.0 / n0) * (kernel_weight(dp, re) / 4.0 + kernel_weight(std::sqrt(2.0) * dp, re) / 4.0 +
-                                            5.0 * kernel_weight(2.0 * dp, re) / 8.0);
-  EXPECT_NEAR(closed, measured, 1e-12);
-  expect_floor_shear_rates(2.1, {0}, {measured});
-}
+TEST(StrainRate, NoSlipFloorExactInEveryRowDefaultKernel) { expect_floor_shear_rates_exact(2.1); }
+TEST(StrainRate, NoSlipFloorExactInEveryRowWiderKernel) { expect_floor_shear_rates_exact(3.1); }
 
-// re = 3.1 dp: row 0 measured 0.848222... gamma (all of its boundary neighbours capped); row 1 0.9999925... gamma, the
-// closed form 1 - (2 / n0) W(3 dp) / 4 of its single capped neighbour (depth 3 dp/2, straight below at r = 3 dp,
-// d_i = 3 dp/2): the linear field's difference -(1 + 1) gamma d_i = -3 gamma dp against the capped -1.5 gamma d_i =
-// -2.25 gamma dp, i.e. 0.75 gamma dp more, times r_y W / r^2 = -W / (3 dp).
-TEST(StrainRate, NoSlipFloorWiderKernel) {
-  const double measured_row0 = 0.84822221483840732, measured_row1 = 0.99999251204011985;
-  const double dp = 0.1, re = 3.1 * dp;
-  const double n0 = lattice_constants<2>(dp, re).n0;
-  EXPECT_NEAR(1.0 - (2.0 / n0) * kernel_weight(3.0 * dp, re) / 4.0, measured_row1, 1e-12);
-  expect_floor_shear_rates(3.1, {0, 1}, {measured_row0, measured_row1});
+// A particle nearer the face than the clip (dp/4) takes the factor of one at dp/2: 1 + d_j / (dp/2), not 1 + d_j / d_i.
+TEST(StrainRate, MirrorClipsTheDistanceFromTheFace) {
+  EXPECT_EQ(no_slip_mirror_factor(0.025, 0.05, 0.05), 2.0);
+  EXPECT_DOUBLE_EQ(no_slip_mirror_factor(0.05, 0.15, 0.05), 4.0);
+  EXPECT_DOUBLE_EQ(no_slip_mirror_factor(0.2, 0.15, 0.05), 1.75);
+  EXPECT_EQ(no_slip_mirror_factor(-0.01, 0.05, 0.05), 2.0);  // past the face
 }
 
 // Free slip: boundary particles are left out, so the channel gives what the fluid alone gives, whatever the walls'
@@ -449,8 +412,8 @@ TEST(StrainRate, FreeSlipLeavesWallsOut) {
   int near_wall = 0;
   for (std::size_t i = 0; i < C.P.size(); ++i) {
     if (!C.tested(i)) continue;
-    const double g = shear_rate<2>(i, C.P, C.list, C.re, C.constants.n0, WallSlip::free_slip);
-    EXPECT_NEAR(g, shear_rate<2>(in_fluid[i], fluid, fluid_list, C.re, C.constants.n0, WallSlip::free_slip),
+    const double g = shear_rate<2>(i, C.P, C.list, C.re, C.constants.n0, ViscousWall{WallSlip::free_slip, 0.5 * C.dp});
+    EXPECT_NEAR(g, shear_rate<2>(in_fluid[i], fluid, fluid_list, C.re, C.constants.n0, ViscousWall{WallSlip::free_slip, 0.5 * C.dp}),
                 1e-12 * C.gamma);
     if (C.P.position[i][1] > C.re) {
       EXPECT_NEAR(g, C.gamma, 1e-9 * C.gamma);
