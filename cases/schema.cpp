@@ -30,6 +30,7 @@ struct Schema::Node {
   std::string tag;                         // Variant
   std::vector<std::pair<std::string, Schema>> variants;  // Variant, as given (for the document)
   std::vector<Schema> tagged;  // Variant: each variant's fields with the tag prepended (for resolve)
+  std::optional<std::string> default_tag;  // Variant: the tag taken when it is left out
 };
 
 namespace {
@@ -211,7 +212,18 @@ std::optional<YAML::Node> absent_value(const Node& s) {
       }
       return out;
     }
-    case Schema::Kind::Variant: return std::nullopt;
+    case Schema::Kind::Variant: {
+      if (!s.default_tag) return std::nullopt;
+      YAML::Node tagged(YAML::NodeType::Map);
+      tagged[s.tag] = *s.default_tag;
+      try {
+        const auto names = names_of(s.variants);
+        const auto k = std::size_t(std::find(names.begin(), names.end(), *s.default_tag) - names.begin());
+        return s.tagged[k].resolve(tagged, "");
+      } catch (const SceneError&) {
+        return std::nullopt;  // the default variant has required fields
+      }
+    }
     default:
       if (s.default_value) return YAML::Clone(*s.default_value);
       return std::nullopt;
@@ -332,10 +344,14 @@ Schema Schema::list(std::string doc, Schema item, std::size_t min_items) {
   return Schema(n);
 }
 
-Schema Schema::variant(std::string doc, std::string tag, std::vector<std::pair<std::string, Schema>> variants) {
+Schema Schema::variant(std::string doc, std::string tag, std::vector<std::pair<std::string, Schema>> variants,
+                       std::optional<std::string> default_tag) {
   if (variants.empty()) throw std::invalid_argument("schema \"" + doc + "\": no variants");
+  if (default_tag && std::none_of(variants.begin(), variants.end(), [&](const auto& v) { return v.first == *default_tag; }))
+    throw std::invalid_argument("schema \"" + doc + "\": the default tag names no variant");
   auto n = std::make_shared<Node>();
   n->kind = Kind::Variant;
+  n->default_tag = std::move(default_tag);
   n->doc = std::move(doc);
   n->tag = std::move(tag);
   n->variants = std::move(variants);
@@ -360,7 +376,7 @@ bool Schema::is_optional() const {
   switch (node_->kind) {
     case Kind::Map: return !node_->required;
     case Kind::List: return node_->min_items == 0;
-    case Kind::Variant: return false;
+    case Kind::Variant: return node_->default_tag.has_value();
     default: return node_->default_value.has_value();
   }
 }
@@ -455,7 +471,13 @@ YAML::Node Schema::resolve(const YAML::Node& input, const std::string& path) con
       if (!input.IsMap())
         fail(path, fmt::format("expected a map with key '{}' (one of: {}), got {}", s.tag, comma_list(names),
                                describe(input)));
-      const YAML::Node tag = input[s.tag];  // const lookup: does not insert
+      YAML::Node tag = input[s.tag];  // const lookup: does not insert
+      if (!tag.IsDefined() && s.default_tag) {
+        YAML::Node with_tag(YAML::NodeType::Map);
+        with_tag[s.tag] = *s.default_tag;
+        for (const auto& kv : input) with_tag[kv.first] = kv.second;
+        return resolve(with_tag, path);
+      }
       if (!tag.IsDefined())
         fail(tag_path, "missing required key (selects the kind of " + without_period(s.doc) +
                            "; one of: " + comma_list(names) + ")");
@@ -555,8 +577,9 @@ void walk(const Node& s, const std::string& path, bool self_row, std::vector<Row
     }
     case Schema::Kind::Variant: {
       const std::vector<std::string> names = names_of(s.variants);
-      if (self_row) rows.push_back({path, "variant", "", "required", "", s.doc});
-      rows.push_back({join(path, s.tag), "choice", "", "required", "one of: " + comma_list(names),
+      if (self_row) rows.push_back({path, "variant", "", s.default_tag ? "optional" : "required", "", s.doc});
+      rows.push_back({join(path, s.tag), "choice", "", s.default_tag ? "\"" + *s.default_tag + "\"" : "required",
+                      "one of: " + comma_list(names),
                       "Selects the kind of " + without_period(s.doc) + "; the fields of each kind follow."});
       for (const auto& [name, vmap] : s.variants) {
         const std::string vpath = fmt::format("{} ({}: {})", path, s.tag, name);

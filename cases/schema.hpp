@@ -59,9 +59,11 @@ class Schema {
                     bool required = true);
   // A list whose items all follow `item`. Absent => empty list if min_items == 0, else required.
   static Schema list(std::string doc, Schema item, std::size_t min_items = 0);
-  // A map discriminated by the string value of key `tag`; each variant is a map() of the other fields.
+  // A map discriminated by the string value of key `tag`; each variant is a map() of the other fields. With a
+  // default tag, the tag may be left out (and the whole variant, when that variant's fields all have defaults).
   static Schema variant(std::string doc, std::string tag,
-                        std::vector<std::pair<std::string, Schema>> variants);
+                        std::vector<std::pair<std::string, Schema>> variants,
+                        std::optional<std::string> default_tag = std::nullopt);
 
   Kind kind() const;
   const std::string& doc() const;

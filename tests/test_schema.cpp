@@ -214,6 +214,28 @@ fluid:
   EXPECT_SCENE_ERROR("fluid: {spacing: 0.1, regions: [5]}", "fluid.regions[0]", "expected a map with key 'type'");
 }
 
+// A variant with a default tag: the tag may be left out, and so may the whole variant when the default variant's
+// fields all have defaults; a given tag still selects, and the default variant's unknown keys are still errors.
+TEST(Schema, VariantWithADefaultTag) {
+  const Schema newtonian = Schema::map("A Newtonian fluid.", {{"viscosity", Schema::number("Viscosity.", "Pa s", 1e-3)}});
+  const Schema bingham = Schema::map("A Bingham fluid.", {{"yield_stress", Schema::number("Yield.", "Pa", std::nullopt)}});
+  const Schema phase = Schema::map("A phase.", {{"rheology", Schema::variant("rheology", "model",
+                                                 {{"newtonian", newtonian}, {"bingham", bingham}}, "newtonian")}});
+  const YAML::Node absent = phase.resolve(YAML::Load("{}"));
+  EXPECT_EQ(absent["rheology"]["model"].as<std::string>(), "newtonian");
+  EXPECT_DOUBLE_EQ(absent["rheology"]["viscosity"].as<double>(), 1e-3);
+  const YAML::Node untagged = phase.resolve(YAML::Load("{rheology: {viscosity: 2}}"));
+  EXPECT_EQ(untagged["rheology"]["model"].as<std::string>(), "newtonian");
+  EXPECT_DOUBLE_EQ(untagged["rheology"]["viscosity"].as<double>(), 2.0);
+  const YAML::Node tagged = phase.resolve(YAML::Load("{rheology: {model: bingham, yield_stress: 5}}"));
+  EXPECT_DOUBLE_EQ(tagged["rheology"]["yield_stress"].as<double>(), 5.0);
+  EXPECT_THROW(phase.resolve(YAML::Load("{rheology: {yield_stress: 5}}")), SceneError);
+  EXPECT_THROW(phase.resolve(YAML::Load("{rheology: {model: bingham}}")), SceneError);
+  EXPECT_THROW(Schema::variant("v", "model", {{"newtonian", newtonian}}, "plastic"), std::invalid_argument);
+  EXPECT_NE(phase.document("t").find("| `rheology.model` | choice |  | \"newtonian\" | one of: newtonian, bingham |"),
+            std::string::npos);
+}
+
 TEST(Schema, OptionalMaps) {
   // `time` has defaults for all fields: filled in when absent. `probe` has a required field: left out.
   const YAML::Node out = scene_schema().resolve(YAML::Load(kValidScene));
