@@ -5,6 +5,7 @@
 #include <set>
 
 #include "cases/initial_state.hpp"
+#include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/fluid_options.hpp"
@@ -33,6 +34,9 @@ TEST(NameTable, EveryOptionReadsBackAsItself) {
   expect_round_trip(time_step_limit_names);
   expect_round_trip(cases::initial_state_names);
   expect_round_trip(BodyMotion::mode_names);
+  expect_round_trip(viscous_scheme_names);
+  expect_round_trip(cases::rheology_model_names);
+  expect_round_trip(cases::regularisation_names);
 }
 
 // The reference document lists a choice's names as "one of: a, b, ...": each table's names appear there, in order.

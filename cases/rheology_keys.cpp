@@ -1,0 +1,92 @@
+#include "cases/rheology_keys.hpp"
+
+namespace slide::cases {
+namespace {
+
+using S = Schema;
+constexpr double inf = Schema::inf;
+
+// The yield term's regularisation and the power-law cap, shared by the models with a yield stress. Defaults: see
+// the case files and tests/test_hb_poiseuille.cpp for the measured effect of the regularisation on the answer.
+std::vector<std::pair<std::string, Schema>> yield_keys() {
+  return {
+      {"regularisation", S::choice("regularisation of the yield term: papanastasiou, tau_y (1 - exp(-m g)) / g; "
+                                   "bi_viscosity, min(tau_y / g, max_viscosity) (fluid/rheology/regularisation.hpp)",
+                                   regularisation_names.names(), "papanastasiou")},
+      {"papanastasiou_exponent", S::number("Papanastasiou's m: the viscosity at rest is tau_y m", "s", 1000.0, 0.0,
+                                           inf, true)},
+      {"max_viscosity", S::number("bi_viscosity: the cap of the yield term", "Pa s", 1.0e4, 0.0, inf, true)},
+      {"max_power_law_viscosity", S::number("cap of the power-law term K g^(n-1) for n < 1 (it diverges at rest)",
+                                            "Pa s", 1.0e4, 0.0, inf, true)},
+  };
+}
+
+std::vector<std::pair<std::string, Schema>> with(std::vector<std::pair<std::string, Schema>> a,
+                                                 const std::vector<std::pair<std::string, Schema>>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+Regularisation read_regularisation(const YAML::Node& r) {
+  if (regularisation_names.parse(r["regularisation"].as<std::string>()) == RegularisationKind::bi_viscosity)
+    return BiViscosity{r["max_viscosity"].as<double>()};
+  return Papanastasiou{r["papanastasiou_exponent"].as<double>()};
+}
+
+}  // namespace
+
+Schema rheology_schema() {
+  auto newtonian = S::map("viscosity independent of the shear rate",
+                          {{"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf)}});
+  auto herschel_bulkley = S::map(
+      "Herschel-Bulkley: eta = K g^(n-1) + tau_y / g, regularised (fluid/rheology/herschel_bulkley.hpp)",
+      with({{"yield_stress", S::number("yield stress tau_y", "Pa", 0.0, 0.0, inf)},
+            {"consistency", S::number("consistency K", "Pa s^n", std::nullopt, 0.0, inf)},
+            {"flow_index", S::number("flow index n (1: Bingham)", "", 1.0, 0.0, inf, true)}},
+           yield_keys()));
+  auto mohr_coulomb = S::map(
+      "Herschel-Bulkley with a pressure-dependent yield stress tau_y = c + p tan(phi) (fluid/rheology/mohr_coulomb.hpp)",
+      with({{"cohesion", S::number("cohesion c", "Pa", 0.0, 0.0, inf)},
+            {"friction_angle", S::number("internal friction angle phi", "deg", std::nullopt, 0.0, 90.0, false, true)},
+            {"consistency", S::number("consistency K", "Pa s^n", 0.0, 0.0, inf)},
+            {"flow_index", S::number("flow index n", "", 1.0, 0.0, inf, true)}},
+           yield_keys()));
+  // Defaults: Jop, Forterre & Pouliquen (2006)'s glass beads.
+  auto granular = S::map(
+      "dense granular flow, mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1), eta = mu(I) p / g (Jop, Forterre & Pouliquen "
+      "2006; fluid/rheology/granular_mu_i.hpp); defaults are their glass beads",
+      {{"mu_s", S::number("static friction coefficient", "", 0.38, 0.0, inf)},
+       {"mu_2", S::number("limiting friction coefficient", "", 0.64, 0.0, inf)},
+       {"i0", S::number("inertial number scale I0", "", 0.279, 0.0, inf, true)},
+       {"grain_diameter", S::number("grain diameter d", "m", 0.53e-3, 0.0, inf, true)},
+       {"grain_density", S::number("grain density rho_s", "kg/m^3", 2450.0, 0.0, inf, true)},
+       {"max_viscosity", S::number("cap of eta (regularisation at rest)", "Pa s", 1.0e4, 0.0, inf, true)},
+       {"min_viscosity", S::number("floor of eta where the pressure vanishes", "Pa s", 0.0, 0.0, inf)}});
+  return S::variant("rheology of the phase", "model",
+                    {{"newtonian", newtonian},
+                     {"herschel_bulkley", herschel_bulkley},
+                     {"mohr_coulomb", mohr_coulomb},
+                     {"granular", granular}},
+                    "newtonian");
+}
+
+Rheology read_rheology(const YAML::Node& r) {
+  switch (rheology_model_names.parse(r["model"].as<std::string>())) {
+    case RheologyModel::newtonian: return Newtonian{r["viscosity"].as<double>()};
+    case RheologyModel::herschel_bulkley:
+      return HerschelBulkley{r["yield_stress"].as<double>(), r["consistency"].as<double>(), r["flow_index"].as<double>(),
+                             read_regularisation(r), r["max_power_law_viscosity"].as<double>()};
+    case RheologyModel::mohr_coulomb:
+      return MohrCoulomb{r["cohesion"].as<double>(),      r["friction_angle"].as<double>(),
+                         r["consistency"].as<double>(),   r["flow_index"].as<double>(),
+                         read_regularisation(r),          r["max_power_law_viscosity"].as<double>()};
+    case RheologyModel::granular:
+      return GranularMuI{r["mu_s"].as<double>(),           r["mu_2"].as<double>(),
+                         r["i0"].as<double>(),             r["grain_diameter"].as<double>(),
+                         r["grain_density"].as<double>(),  r["max_viscosity"].as<double>(),
+                         r["min_viscosity"].as<double>()};
+  }
+  throw std::logic_error("unknown rheology model");
+}
+
+}  // namespace slide::cases

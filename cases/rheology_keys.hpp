@@ -1,0 +1,31 @@
+#pragma once
+// The scene keys of a rheology (a phase's `rheology`, a deformable slide's), and reading them into fluid/'s types.
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "cases/schema.hpp"
+#include "fluid/name_table.hpp"
+#include "fluid/rheology/rheology.hpp"
+
+namespace slide::cases {
+
+enum class RheologyModel { newtonian, herschel_bulkley, mohr_coulomb, granular };
+
+inline constexpr auto rheology_model_names = make_name_table<RheologyModel>(
+    std::pair{RheologyModel::newtonian, "newtonian"}, std::pair{RheologyModel::herschel_bulkley, "herschel_bulkley"},
+    std::pair{RheologyModel::mohr_coulomb, "mohr_coulomb"}, std::pair{RheologyModel::granular, "granular"});
+
+enum class RegularisationKind { papanastasiou, bi_viscosity };
+
+inline constexpr auto regularisation_names = make_name_table<RegularisationKind>(
+    std::pair{RegularisationKind::papanastasiou, "papanastasiou"},
+    std::pair{RegularisationKind::bi_viscosity, "bi_viscosity"});
+
+// The variant keyed by `model` (default newtonian), each model with its own keys (fluid/rheology/*.hpp).
+Schema rheology_schema();
+
+// A resolved `rheology` node as the model it names.
+Rheology read_rheology(const YAML::Node& resolved);
+
+}  // namespace slide::cases

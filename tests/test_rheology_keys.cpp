@@ -1,0 +1,68 @@
+// The rheology scene keys: each model's keys read into its fluid/ type, defaults filled, wrong keys refused.
+#include <gtest/gtest.h>
+
+#include "cases/rheology_keys.hpp"
+
+namespace slide::cases {
+namespace {
+
+Rheology read(const std::string& yaml) { return read_rheology(rheology_schema().resolve(YAML::Load(yaml))); }
+
+TEST(RheologyKeys, EachModelReadsIntoItsType) {
+  EXPECT_EQ(std::get<Newtonian>(read("{}")).viscosity_pa_s, 1e-3);
+  EXPECT_EQ(std::get<Newtonian>(read("{viscosity: 0.5}")).viscosity_pa_s, 0.5);
+
+  const auto hb = std::get<HerschelBulkley>(
+      read("{model: herschel_bulkley, yield_stress: 10, consistency: 5, flow_index: 0.5, papanastasiou_exponent: 200}"));
+  EXPECT_EQ(hb.yield_stress_pa, 10.0);
+  EXPECT_EQ(hb.consistency_pa_s_n, 5.0);
+  EXPECT_EQ(hb.flow_index, 0.5);
+  EXPECT_EQ(std::get<Papanastasiou>(hb.regularisation).exponent_s, 200.0);
+  EXPECT_EQ(hb.max_power_law_viscosity_pa_s, 1e4);
+
+  const auto bi = std::get<HerschelBulkley>(
+      read("{model: herschel_bulkley, consistency: 1, regularisation: bi_viscosity, max_viscosity: 300}"));
+  EXPECT_EQ(std::get<BiViscosity>(bi.regularisation).max_viscosity_pa_s, 300.0);
+  EXPECT_EQ(bi.yield_stress_pa, 0.0);
+  EXPECT_EQ(bi.flow_index, 1.0);
+
+  const auto mc = std::get<MohrCoulomb>(read("{model: mohr_coulomb, friction_angle: 30, cohesion: 5}"));
+  EXPECT_EQ(mc.friction_angle_deg, 30.0);
+  EXPECT_EQ(mc.cohesion_pa, 5.0);
+  EXPECT_EQ(mc.consistency_pa_s_n, 0.0);
+
+  const auto g = std::get<GranularMuI>(read("{model: granular, grain_diameter: 0.001}"));
+  EXPECT_EQ(g.mu_s, 0.38);
+  EXPECT_EQ(g.mu_2, 0.64);
+  EXPECT_EQ(g.i0, 0.279);
+  EXPECT_EQ(g.grain_diameter_m, 0.001);
+  EXPECT_EQ(g.grain_density_kg_m3, 2450.0);
+}
+
+TEST(RheologyKeys, WrongKeysAreRefusedWithTheirPath) {
+  auto error_path = [](const std::string& yaml) {
+    try {
+      rheology_schema().resolve(YAML::Load(yaml), "rheology");
+    } catch (const SceneError& e) {
+      return e.key_path;
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_path("{model: herschel_bulkley}"), "rheology.consistency");  // required
+  EXPECT_EQ(error_path("{model: herschel_bulkley, consistency: 1, friction_angle: 3}"), "rheology.friction_angle");
+  EXPECT_EQ(error_path("{model: mohr_coulomb, friction_angle: 90}"), "rheology.friction_angle");  // below 90
+  EXPECT_EQ(error_path("{model: plastic}"), "rheology.model");
+  EXPECT_EQ(error_path("{yield_stress: 3}"), "rheology.yield_stress");  // newtonian has no yield stress
+}
+
+TEST(RheologyKeys, ModelNamesMatchTheRheologyTypes) {
+  for (const auto& [model, name] : rheology_model_names.entries) {
+    std::string yaml = "{model: " + std::string(name);
+    if (model == RheologyModel::herschel_bulkley) yaml += ", consistency: 1";
+    if (model == RheologyModel::mohr_coulomb) yaml += ", friction_angle: 30";
+    EXPECT_EQ(model_name(read(yaml + "}")), name);
+  }
+}
+
+}  // namespace
+}  // namespace slide::cases
