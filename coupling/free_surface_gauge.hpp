@@ -14,7 +14,7 @@ namespace slide {
 // 0.03 dp and 0.02 dp below the edge (half a row spacing above the top row), measured by tests/test_gauge.cpp.
 // (A threshold of n0 / 2, which ignores that n0 excludes a particle's own weight, put it 0.3 dp above the edge.)
 // Scans down from above the highest nearby fluid particle in steps of dp/4, then bisects. NaN when the line meets
-// no water.
+// no water. Periodic ghosts take part, here and in the number density: they are the water beyond the period's ends.
 template <int D>
 double free_surface_elevation(const Simulation<D>& sim, const Vec<D>& gauge_point) {
   constexpr int up = D - 1;

@@ -33,8 +33,8 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   out.duration = duration;
   out.damping_rate = damping_rate;
   const auto& P = sim.particles;
-  std::vector<Vec<2>> start(P.size());
-  for (std::size_t i = 0; i < P.size(); ++i) start[P.id[i]] = P.position[i];
+  std::vector<Vec<2>> start(P.real_count());  // real particles (periodic ghosts come and go), by id
+  for (std::size_t i = 0; i < P.real_count(); ++i) start[P.id[i]] = P.position[i];
   // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
   // bodies are detached and their particles stand still as walls.
   const std::shared_ptr<RigidBodies> bodies = sim.detach_bodies();
@@ -54,8 +54,12 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
                              " s: " + result.instability->reason);
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
-  for (std::size_t i = 0; i < P.size(); ++i)
-    out.largest_shift = std::max(out.largest_shift, (P.position[i] - start[P.id[i]]).norm());
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    Vec<2> shift = P.position[i] - start[P.id[i]];
+    // Periodic in x: the nearest image (a particle wrapped across the period's ends has not moved a period).
+    if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
+    out.largest_shift = std::max(out.largest_shift, shift.norm());
+  }
   sim.set_velocity_damping(saved_rate);
   if (floating) {
     bodies->set_settling(false);

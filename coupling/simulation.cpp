@@ -2,15 +2,43 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "fluid/artificial_viscosity.hpp"
 #include "fluid/collision.hpp"
 #include "fluid/number_density.hpp"
 #include "fluid/parallel.hpp"
+#include "fluid/periodic.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/wall_pressure.hpp"
 
 namespace slide {
+
+template <int D>
+void Simulation<D>::check_periodic_setup() const {
+  const PeriodicX& period = *options.periodic_x;
+  // A body's force is the sum over its boundary particles' fluid neighbours; ghost images of the body's particles
+  // and of the fluid would count pairs across the period twice (and a body is not periodic), so refuse.
+  if (bodies_)
+    throw std::invalid_argument("periodic_x cannot be combined with rigid bodies: the fluid-body force exchange would "
+                                "count ghost images twice");
+  if (!(period.x_max > period.x_min))
+    throw std::invalid_argument("periodic_x: x_max must exceed x_min");
+  if (!(period.length() >= 2.0 * list_radius()))
+    throw std::invalid_argument("periodic_x: the period (" + std::to_string(period.length()) +
+                                " m) must be at least twice the kernel radius plus the neighbour skin (" +
+                                std::to_string(2.0 * list_radius()) + " m)");
+  const auto& P = particles;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    const double x = P.position[i][0];
+    if (P.kind[i] != Kind::fluid && !(x >= period.x_min && x < period.x_max))
+      throw std::invalid_argument("periodic_x: boundary particle " + std::to_string(P.id[i]) + " at x = " +
+                                  std::to_string(x) + " lies outside the period [" + std::to_string(period.x_min) +
+                                  ", " + std::to_string(period.x_max) +
+                                  "): walls along a periodic channel must cover the period exactly once");
+  }
+}
 
 template <int D>
 void Simulation<D>::initialise() {
@@ -19,7 +47,14 @@ void Simulation<D>::initialise() {
   rheology_ = false;
   for (const auto& ph : phases) rheology_ = rheology_ || !std::holds_alternative<Newtonian>(ph.rheology);
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
-  grid_ = NeighborGrid<D>(options.domain_lo, options.domain_hi, re() + options.skin_over_dp * dp);
+  Vec<D> grid_lo = options.domain_lo, grid_hi = options.domain_hi;
+  if (options.periodic_x) {
+    check_periodic_setup();
+    // The grid also covers the ghost layers beyond the period's ends.
+    grid_lo[0] = std::min(grid_lo[0], options.periodic_x->x_min - list_radius());
+    grid_hi[0] = std::max(grid_hi[0], options.periodic_x->x_max + list_radius());
+  }
+  grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
   scratch_.assign(particles.size(), Vec<D>::Zero());
   if constexpr (D == 2) {
     if (bodies_) bodies_->place_particles(particles, time_);
@@ -48,44 +83,68 @@ void Simulation<D>::update_neighbors(bool force) {
   auto& x = particles.position;
   const double half_skin = 0.5 * options.skin_over_dp * options.dp;
   if (!force) {
-    const double moved2 = parallel_max(x.size(), 0.0, [&](std::size_t i) {
+    // Ghosts move with their sources: the real particles decide.
+    const double moved2 = parallel_max(particles.real_count(), 0.0, [&](std::size_t i) {
       return distance_squared<D>(x[i], position_at_build_[i]);
     });
     if (moved2 < half_skin * half_skin) return;
   }
+  // Periodic: drop the ghosts and bring the real particles back into the period before sorting them.
+  if (options.periodic_x) {
+    remove_ghosts(particles);
+    wrap_positions(particles, *options.periodic_x);
+  }
   // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again.
   grid_.bin(x);
   particles.reorder(grid_.sorted_indices());
+  // Periodic: fresh ghosts behind the sorted real particles; they are binned and found as neighbours, but need no
+  // list of their own (every stage computes real particles only and copies them into the ghosts).
+  if (options.periodic_x) {
+    add_ghosts(particles, *options.periodic_x, list_radius());
+    scratch_.resize(particles.size(), Vec<D>::Zero());
+  }
   grid_.bin(x);
-  build_neighbor_list(grid_, x, re() + options.skin_over_dp * options.dp, list_);
+  build_neighbor_list(grid_, x, list_radius(), list_, particles.real_count());
   position_at_build_ = x;
   ++rebuilds_;
 }
 
+// Copies every real particle into its ghosts (nothing to do when not periodic).
+template <int D>
+void Simulation<D>::sync_ghosts_now() {
+  if (particles.ghost_count() != 0) sync_ghosts(particles);
+}
+
+// Periodic: each sub-stage computes the real particles, and its result is copied into the ghosts before the next
+// reads it (a ghost's own neighbourhood is cut off at the outer edge of the ghost layer, so a ghost never computes).
 template <int D>
 void Simulation<D>::compute_pressure() {
   auto& P = particles;
+  const std::size_t n = P.real_count();
   const double r_e = re();
   using WP = WallPressure;
   if (options.wall_pressure == WP::mirror) {
-    parallel_for(P.size(), [&](std::size_t i) {
+    parallel_for(n, [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, options.dp);
     });
-    parallel_for(P.size(), [&](std::size_t i) {
+    copy_to_ghosts(P, P.wall_fill);
+    parallel_for(n, [&](std::size_t i) {
       P.number_density[i] = weighted_number_density_of<D>(i, P.position, P.wall_fill, list_, r_e);
     });
   } else {
-    compute_number_density<D>(P.position, list_, r_e, P.number_density);
+    parallel_for(n, [&](std::size_t i) { P.number_density[i] = number_density_of<D>(i, P.position, list_, r_e); });
   }
+  copy_to_ghosts(P, P.number_density);
   const double surface_n = options.free_surface_beta * lattice.n0;
-  parallel_for(P.size(), [&](std::size_t i) {
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     const double n = P.number_density[i];
     double p = n < surface_n ? 0.0 : eos.pressure(n, P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
-  parallel_for(P.size(), [&](std::size_t i) {
+  copy_to_ghosts(P, P.pressure);  // boundary pressure below reads the fluid's, ghosts' included
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] == Kind::fluid) return;
     // The head between a boundary particle and the fluid follows g - a_w: a wall that accelerates into the water
     // pushes harder (Adami, Hu & Adams 2012, eq. 27). Fixed walls have a_w = 0; body particles carry their body's
@@ -101,12 +160,13 @@ void Simulation<D>::compute_pressure() {
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
+  copy_to_ghosts(P, P.pressure);
 }
 
 template <int D>
 double Simulation<D>::max_fluid_speed() const {
   const auto& P = particles;
-  return std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) {
+  return std::sqrt(parallel_max(P.real_count(), 0.0, [&](std::size_t i) {
     return P.kind[i] == Kind::fluid ? P.velocity[i].squaredNorm() : 0.0;
   }));
 }
@@ -114,14 +174,15 @@ double Simulation<D>::max_fluid_speed() const {
 template <int D>
 std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
   const auto& P = particles;
+  const std::size_t n = P.real_count();  // ghosts equal their sources: the real particles decide
   const double dp = options.dp;
   // Moving boundaries count in the CFL limit: a slide faster than the water around it must not cross more than a
   // fraction of a spacing per step either (fixed walls have zero velocity).
-  const double u_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) { return P.velocity[i].squaredNorm(); }));
+  const double u_max = std::sqrt(parallel_max(n, 0.0, [&](std::size_t i) { return P.velocity[i].squaredNorm(); }));
   // So do they in the force limit: body particles carry their body's rigid acceleration (a slide hitting the slope
   // or the water decelerates hard), fixed walls zero.
-  const double a_max = std::sqrt(parallel_max(P.size(), 0.0, [&](std::size_t i) { return P.acceleration[i].squaredNorm(); }));
-  const double nu_max = parallel_max(P.size(), 0.0, [&](std::size_t i) {
+  const double a_max = std::sqrt(parallel_max(n, 0.0, [&](std::size_t i) { return P.acceleration[i].squaredNorm(); }));
+  const double nu_max = parallel_max(n, 0.0, [&](std::size_t i) {
     return P.kind[i] == Kind::fluid ? P.viscosity[i] / P.density[i] : 0.0;
   });
   std::pair<double, TimeStepLimit> best{options.dt_max, TimeStepLimit::dt_max};
@@ -155,8 +216,9 @@ template <int D>
 void Simulation<D>::update_viscosity() {
   if (!rheology_) return;
   auto& P = particles;
+  const std::size_t n = P.real_count();
   const double r_e = re();
-  parallel_for(P.size(), [&](std::size_t i) {
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     const Rheology& model = phases[P.phase[i]].rheology;
     if (std::holds_alternative<Newtonian>(model)) return;
@@ -209,7 +271,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     if (bodies_)
       bodies_->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(), particle_volume());
   }
-  parallel_for(P.size(), [&](std::size_t i) {
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     if (implicit) {
       P.acceleration[i] += scratch_[i];
@@ -218,6 +280,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     P.velocity[i] += dt * P.acceleration[i];
     P.position[i] += dt * P.velocity[i];
   });
+  sync_ghosts_now();
 }
 
 template <int D>
@@ -237,20 +300,22 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
   const double r_e = re();
   const GradientModel model = options.gradient;
   const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
-  parallel_for(P.size(), [&](std::size_t i) {
+  const std::size_t n = P.real_count();
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa);
   });
   if constexpr (D == 2) {
     if (bodies_) bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
   }
-  parallel_for(P.size(), [&](std::size_t i) {
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += dt * scratch_[i];
     P.position[i] += (dt * dt) * scratch_[i];
     if (damping != 1.0) P.velocity[i] *= damping;
     P.acceleration[i] += scratch_[i];
   });
+  sync_ghosts_now();
 }
 
 // Collisions between particles that came too close (fluid/collision.hpp).
@@ -259,7 +324,8 @@ void Simulation<D>::collide(double dt) {
   if (options.collision_distance_over_dp <= 0.0) return;
   auto& P = particles;
   const double distance = options.collision_distance_over_dp * options.dp;
-  parallel_for(P.size(), [&](std::size_t i) {
+  const std::size_t n = P.real_count();
+  parallel_for(n, [&](std::size_t i) {
     scratch_[i] = P.kind[i] == Kind::fluid
                       ? collision_velocity_change<D>(i, P, list_, distance, options.collision_restitution)
                       : Vec<D>::Zero();
@@ -268,11 +334,12 @@ void Simulation<D>::collide(double dt) {
     if (bodies_)
       bodies_->add_collision_forces(P, list_, distance, options.collision_restitution, particle_volume(), dt);
   }
-  parallel_for(P.size(), [&](std::size_t i) {
+  parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += scratch_[i];
     P.position[i] += dt * scratch_[i];
   });
+  sync_ghosts_now();
 }
 
 // Rigid bodies: the fluid's force in, one rigid step of the same dt, boundary particles to the new poses.
@@ -290,25 +357,28 @@ std::optional<Instability> Simulation<D>::check() const {
   const auto& P = particles;
   const double n_max = options.max_number_density_ratio * lattice.n0;
   const double u_max = options.max_speed_over_c0 * options.sound_speed;
-  // Problem code per particle, most severe highest: 4 non-finite, 3 out of domain, 2 collapse, 1 speed.
+  // Problem code per particle, most severe highest: 4 non-finite, 3 out of domain, 2 collapse, 1 speed. Real
+  // particles only (a ghost equals its source); a periodic x has no bounds to leave (wrapped at each rebuild).
+  const std::size_t n = P.real_count();
+  const int first_bounded = options.periodic_x ? 1 : 0;
   auto code = [&](std::size_t i) -> int {
     const auto& x = P.position[i];
     if (!x.allFinite() || !P.velocity[i].allFinite() || !std::isfinite(P.pressure[i]) ||
         !std::isfinite(P.number_density[i]))
       return 4;
     if (P.kind[i] != Kind::fluid) return 0;
-    for (int k = 0; k < D; ++k)
+    for (int k = first_bounded; k < D; ++k)
       if (x[k] < options.domain_lo[k] || x[k] > options.domain_hi[k]) return 3;
     if (P.number_density[i] > n_max) return 2;
     if (P.velocity[i].squaredNorm() > u_max * u_max) return 1;
     return 0;
   };
-  const int worst = static_cast<int>(parallel_max(P.size(), 0.0, [&](std::size_t i) { return double(code(i)); }));
+  const int worst = static_cast<int>(parallel_max(n, 0.0, [&](std::size_t i) { return double(code(i)); }));
   if (worst == 0) return std::nullopt;
   // The reported particle: the lowest id with the most severe problem (independent of the thread count).
-  std::size_t pick = P.size();
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (code(i) == worst && (pick == P.size() || P.id[i] < P.id[pick])) pick = i;
+  std::size_t pick = n;
+  for (std::size_t i = 0; i < n; ++i)
+    if (code(i) == worst && (pick == n || P.id[i] < P.id[pick])) pick = i;
   Instability s;
   s.time = time_;
   s.step = step_count_;
@@ -327,6 +397,7 @@ std::optional<Instability> Simulation<D>::check() const {
   return s;
 }
 
+// Periodic: ghosts count (they are the fluid beyond the period's ends), so a point near an end sees all its water.
 template <int D>
 double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
   const auto& P = particles;

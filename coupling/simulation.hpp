@@ -2,6 +2,11 @@
 // The one step loop (DESIGN.md, "The step loop"): neighbours, explicit viscosity and gravity, number density and
 // pressure at the predicted positions, pressure-gradient correction, collisions, rigid bodies (fluid force in,
 // Bullet step, boundary particles placed from the new poses), stability checks.
+//
+// Periodic in x (options.periodic_x, fluid/periodic.hpp): the particle arrays hold the real particles, then their
+// ghost images. Every stage computes the real particles only (particles.real_count()) and then copies the sources
+// into the ghosts; the checks, the time-step limits and the largest speed look at real particles only. Outputs must
+// take the first particles.real_count() entries (tools/run_outputs.hpp, IdOrdered).
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -69,7 +74,8 @@ class Simulation {
   void set_velocity_damping(double rate_per_s) { options.velocity_damping_rate = rate_per_s; }
 
   // Computes n0 and lambda from the lattice, builds the neighbour list, and evaluates number density and
-  // pressure at the initial positions.
+  // pressure at the initial positions. Throws std::invalid_argument for a periodic domain with rigid bodies, with a
+  // period shorter than twice re + skin, or with a boundary particle outside the period.
   void initialise();
 
   // Makes the present positions the start of the run: time and step counts back to zero, fluid at rest, and
@@ -108,6 +114,9 @@ class Simulation {
   void move_bodies(double dt);
 
   double particle_volume() const { return std::pow(options.dp, D); }  // per unit width in 2-D
+  double list_radius() const { return re() + options.skin_over_dp * options.dp; }
+  void check_periodic_setup() const;
+  void sync_ghosts_now();
 
   std::shared_ptr<RigidBodies> bodies_;
   double time_ = 0.0;

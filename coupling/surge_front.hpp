@@ -17,13 +17,14 @@ struct SurgeFront {
 // front is its largest particle x plus half a spacing (the particle's own extent), measured from the wall face.
 // The height at the wall is the highest particle of that body within one spacing of the wall face, plus half a
 // spacing, above the floor face. Union-find over the neighbour list; ties between equal bodies go to the one
-// holding the lowest particle id, so the result does not depend on particle order.
+// holding the lowest particle id, so the result does not depend on particle order. Periodic ghosts are not counted:
+// a link to a ghost links to its source (water connected across the period's ends is one body).
 template <int D>
 SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, double floor_y) {
   const auto& P = sim.particles;
   const auto& nl = sim.neighbors();
   const double dp = sim.options.dp, link2 = 4.0 * dp * dp;
-  const std::size_t n = P.size();
+  const std::size_t n = P.real_count();
   std::vector<std::uint32_t> parent(n);
   std::iota(parent.begin(), parent.end(), 0u);
   auto find = [&](std::uint32_t a) {
@@ -33,9 +34,10 @@ SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, dou
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::fluid) continue;
     for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
-      const std::uint32_t j = *q;
-      if (j <= i || P.kind[j] != Kind::fluid) continue;
-      if (distance_squared<D>(P.position[i], P.position[j]) < link2) {
+      const std::uint32_t g = *q;  // a real particle or a ghost
+      const auto j = static_cast<std::uint32_t>(P.real_index(g));
+      if ((g < n ? j <= i : j == i) || P.kind[g] != Kind::fluid) continue;
+      if (distance_squared<D>(P.position[i], P.position[g]) < link2) {
         const auto a = find(static_cast<std::uint32_t>(i)), b = find(j);
         if (a != b) parent[std::max(a, b)] = std::min(a, b);
       }

@@ -110,16 +110,18 @@ struct NeighborList {
 };
 
 // Builds the list of all j != i with |x_j - x_i| < radius from a grid already binned on x. Grows the slot count
-// and repeats when some particle has more neighbours than slots.
+// and repeats when some particle has more neighbours than slots. Only the first `listed` points get a list (the
+// others, periodic ghosts, are found as neighbours but have an empty list of their own); all of them by default.
 template <int D>
 void build_neighbor_list(const NeighborGrid<D>& grid, const std::vector<Vec<D>>& x, double radius,
-                         NeighborList& list) {
+                         NeighborList& list, std::size_t listed = static_cast<std::size_t>(-1)) {
   const std::size_t n = x.size();
+  const std::size_t m = std::min(n, listed);
   if (list.capacity == 0) list.capacity = 32;
   for (;;) {
     list.count.assign(n, 0);
     list.index.resize(n * list.capacity);
-    const double most = parallel_max(n, 0.0, [&](std::size_t i) {
+    const double most = parallel_max(m, 0.0, [&](std::size_t i) {
       std::uint32_t c = 0;
       std::uint32_t* slots = list.index.data() + i * list.capacity;
       grid.for_each_near(x[i], radius, x, [&](std::uint32_t j, double) {

@@ -1,6 +1,7 @@
 #pragma once
 // The particle store: one array per quantity (structure of arrays), all of the same length.
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "fluid/vec.hpp"
@@ -40,9 +41,47 @@ struct Particles {
   std::vector<Vec<D>> body_offset;
   std::vector<Vec<D>> body_normal;
 
+  // Periodic ghosts (fluid/periodic.hpp). The arrays above hold the real particles first, then ghost_source.size()
+  // ghosts: ghost g, at index real_count() + g, is an image of real particle ghost_source[g], equal to it in every
+  // array except that its position is shifted by ghost_shift[g] along x and its id is real_count() + g (real ids
+  // are creation indices, 0 .. real_count() - 1, so they never collide). Removing the ghosts truncates the arrays.
+  // Without periodic boundaries there are none and real_count() == size().
+  std::vector<std::uint32_t> ghost_source;
+  std::vector<double> ghost_shift;
+
   std::size_t size() const { return position.size(); }
+  std::size_t ghost_count() const { return ghost_source.size(); }
+  std::size_t real_count() const { return size() - ghost_source.size(); }
+  // The real particle that index j stands for: j itself, or a ghost's source.
+  std::size_t real_index(std::size_t j) const {
+    const std::size_t r = real_count();
+    return j < r ? j : ghost_source[j - r];
+  }
+
+  // Calls f(array) for every per-particle array (each of length size()): the one list of them, so that re-sorting,
+  // ghost creation, copying and truncation cannot miss one.
+  template <class F>
+  void for_each_array(F&& f) {
+    f(position);
+    f(velocity);
+    f(acceleration);
+    f(pressure);
+    f(number_density);
+    f(density);
+    f(viscosity);
+    f(phase);
+    f(kind);
+    f(id);
+    f(wall_normal);
+    f(wall_depth);
+    f(wall_fill);
+    f(body);
+    f(body_offset);
+    f(body_normal);
+  }
 
   std::size_t add(const Vec<D>& x, Kind k, std::uint8_t phase_index, double rho, double mu) {
+    if (!ghost_source.empty()) throw std::logic_error("Particles::add with periodic ghosts present");
     const std::size_t i = size();
     position.push_back(x);
     velocity.push_back(Vec<D>::Zero());
@@ -63,24 +102,11 @@ struct Particles {
     return i;
   }
 
-  // Reorders every array so that new index i holds what was at old index order[i].
+  // Reorders every array so that new index i holds what was at old index order[i] (real particles only: ghosts
+  // are removed first, fluid/periodic.hpp).
   void reorder(const std::vector<std::uint32_t>& order) {
-    permute(position, order);
-    permute(velocity, order);
-    permute(acceleration, order);
-    permute(pressure, order);
-    permute(number_density, order);
-    permute(density, order);
-    permute(viscosity, order);
-    permute(phase, order);
-    permute(kind, order);
-    permute(id, order);
-    permute(wall_normal, order);
-    permute(wall_depth, order);
-    permute(wall_fill, order);
-    permute(body, order);
-    permute(body_offset, order);
-    permute(body_normal, order);
+    if (!ghost_source.empty()) throw std::logic_error("Particles::reorder with periodic ghosts present");
+    for_each_array([&](auto& v) { permute(v, order); });
   }
 
   template <class T>

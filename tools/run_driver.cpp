@@ -73,7 +73,7 @@ std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
 }
 
 double memory_estimate_mb(const Simulation<2>& sim) {
-  const std::size_t n = sim.particles.size();
+  const std::size_t n = sim.particles.size();  // periodic ghosts included: they take memory
   const std::size_t per_particle = 4 * sizeof(Vec<2>) + 5 * sizeof(double) + 2 + 4 + sizeof(Vec<2>) + 8;
   const std::size_t list = n * sim.neighbors().capacity * sizeof(std::uint32_t) + n * 4;
   // The run keeps one more copy of the particles as the last good state, and a position copy for the skin test.
@@ -101,7 +101,7 @@ int check_command(const RunArguments& args) {
       "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
       "memory          about {:.1f} MB\n"
       "{}",
-      scene->name, sim.particles.size(), scene->fluid_count, scene->wall_count, scene->dummy_count, o.dp,
+      scene->name, sim.particles.real_count(), scene->fluid_count, scene->wall_count, scene->dummy_count, o.dp,
       o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
       scene->lattice_offset[1] != 0.0
           ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene->lattice_offset[1])
@@ -175,7 +175,7 @@ class ProgressLine : public StepObserver<2> {
     if (Clock::now() < next_) return;
     next_ = Clock::now() + std::chrono::seconds(1);
     const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
-    const double rate = double(sim.particles.size()) * sim.step_count() / wall;
+    const double rate = double(sim.particles.real_count()) * sim.step_count() / wall;
     const double eta = wall / sim.time() * (end_ - sim.time());
     std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s   ",
                              sim.time(), end_, dt, rate / 1e6, eta)
@@ -207,7 +207,7 @@ int run_command(const RunArguments& args) {
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
-    const double particle_steps = double(sim.particles.size()) * double(sim.step_count());
+    const double particle_steps = double(sim.particles.real_count()) * double(sim.step_count());
     json j;
     j["program"] = "slide";
     j["version"] = SLIDE_VERSION;
@@ -217,7 +217,7 @@ int run_command(const RunArguments& args) {
     j["status"] = status;
     j["message"] = message;
     j["threads"] = thread_count();
-    j["particles"] = {{"total", sim.particles.size()}, {"fluid", scene->fluid_count},
+    j["particles"] = {{"total", sim.particles.real_count()}, {"fluid", scene->fluid_count},
                       {"wall", scene->wall_count},      {"dummy", scene->dummy_count}};
     j["derived"] = {{"n0", sim.lattice.n0},
                     {"lambda", sim.lattice.lambda},
@@ -289,7 +289,7 @@ int run_command(const RunArguments& args) {
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     const std::string msg = fmt::format(
         "completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",
-        sim.time(), sim.step_count(), wall, double(sim.particles.size()) * sim.step_count() / wall / 1e6,
+        sim.time(), sim.step_count(), wall, double(sim.particles.real_count()) * sim.step_count() / wall / 1e6,
         limit_summary(sim.limit_counts()));
     write_run_json("completed", msg, json::object());
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\rslide: " << msg << "\n";

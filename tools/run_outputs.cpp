@@ -7,40 +7,33 @@
 #include "coupling/surge_front.hpp"
 
 namespace slide::tools {
-namespace {
 
-// Copies particle data in id order, the order every snapshot uses.
-struct IdOrdered {
-  std::vector<double> position, velocity, pressure, number_density, density;
-  std::vector<std::uint8_t> phase, kind;
-  std::vector<std::uint32_t> id;
-
-  explicit IdOrdered(const Particles<2>& P) {
-    const std::size_t n = P.size();
-    position.resize(2 * n);
-    velocity.resize(2 * n);
-    pressure.resize(n);
-    number_density.resize(n);
-    density.resize(n);
-    phase.resize(n);
-    kind.resize(n);
-    id.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t k = P.id[i];
-      for (int d = 0; d < 2; ++d) {
-        position[2 * k + d] = P.position[i][d];
-        velocity[2 * k + d] = P.velocity[i][d];
-      }
-      pressure[k] = P.pressure[i];
-      number_density[k] = P.number_density[i];
-      density[k] = P.density[i];
-      phase[k] = P.phase[i];
-      kind[k] = static_cast<std::uint8_t>(P.kind[i]);
-      id[k] = k;
+IdOrdered::IdOrdered(const Particles<2>& P) {
+  const std::size_t n = P.real_count();  // periodic ghosts are images, not particles of their own
+  position.resize(2 * n);
+  velocity.resize(2 * n);
+  pressure.resize(n);
+  number_density.resize(n);
+  density.resize(n);
+  phase.resize(n);
+  kind.resize(n);
+  id.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t k = P.id[i];
+    for (int d = 0; d < 2; ++d) {
+      position[2 * k + d] = P.position[i][d];
+      velocity[2 * k + d] = P.velocity[i][d];
     }
+    pressure[k] = P.pressure[i];
+    number_density[k] = P.number_density[i];
+    density[k] = P.density[i];
+    phase[k] = P.phase[i];
+    kind[k] = static_cast<std::uint8_t>(P.kind[i]);
+    id[k] = k;
   }
-  SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
-};
+}
+
+namespace {
 
 // The next time of a periodic sample after one taken now: one interval on, or from now if the run jumped past it.
 double next_after(double next, double interval, double now) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "cases/scene.hpp"
 #include "coupling/advance.hpp"
@@ -11,6 +12,17 @@
 #include "tools/snapshot_writer.hpp"
 
 namespace slide::tools {
+
+// Particle data copied in id order, the order every snapshot uses: the real particles only (periodic ghosts,
+// fluid/periodic.hpp, are left out), whose ids are 0 .. real_count() - 1.
+struct IdOrdered {
+  std::vector<double> position, velocity, pressure, number_density, density;
+  std::vector<std::uint8_t> phase, kind;
+  std::vector<std::uint32_t> id;
+
+  explicit IdOrdered(const Particles<2>& P);
+  SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
+};
 
 class RunOutputs : public StepObserver<2> {
  public:
