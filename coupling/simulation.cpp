@@ -225,6 +225,7 @@ void Simulation<D>::update_viscosity() {
     const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.viscous_wall());
     P.viscosity[i] = effective_viscosity(model, rate, P.pressure[i]);
   });
+  copy_to_ghosts(P, P.viscosity);
 }
 
 // Viscosity and gravity give the predicted velocity and position (fluid only). Explicitly, the viscous term is
@@ -235,11 +236,12 @@ void Simulation<D>::update_viscosity() {
 template <int D>
 void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
   auto& P = particles;
+  const std::size_t n = P.real_count();  // ghosts are copied from their sources at the end
   const double r_e = re();
   const bool implicit = options.viscous_scheme == ViscousScheme::implicit;
   if (implicit) {
     // Explicit accelerations first: gravity and artificial viscosity.
-    parallel_for(P.size(), [&](std::size_t i) {
+    parallel_for(n, [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) return;
       Vec<D> a = options.gravity;
       if (options.artificial_viscosity > 0.0)
@@ -252,13 +254,14 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(),
                                                        dt, P.acceleration);
     record(last_viscous_solve_);
-    parallel_for(P.size(), [&](std::size_t i) {
+    copy_to_ghosts(P, P.velocity);  // u~ beyond the period's ends
+    parallel_for(n, [&](std::size_t i) {
       scratch_[i] = P.kind[i] == Kind::fluid
                         ? viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall())
                         : Vec<D>::Zero();
     });
   } else {
-    parallel_for(P.size(), [&](std::size_t i) {
+    parallel_for(n, [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) return;
       Vec<D> a = viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall());
       if (options.artificial_viscosity > 0.0)

@@ -46,8 +46,9 @@ class ImplicitViscosity {
   double tolerance = 1e-8;    // relative residual
   int max_iterations = 500;
 
-  // Replaces P.velocity of every fluid particle by u* (above); `explicit_acceleration` holds a_i for fluid particles.
-  // Positions are not moved. Particles other than fluid keep their velocities.
+  // Replaces P.velocity of every real fluid particle by the solution (above); `explicit_acceleration` holds a_i for
+  // fluid particles. Positions are not moved. Particles other than fluid keep their velocities; periodic ghosts are
+  // left for the caller to copy.
   template <int D>
   ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda,
                            const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration);
@@ -64,7 +65,8 @@ template <int D>
 ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList& nl, double re, double n0,
                                             double lambda, const ViscousWall& wall, double dt,
                                             const std::vector<Vec<D>>& explicit_acceleration) {
-  const std::size_t n = P.size();
+  // Unknowns: the real fluid particles. A periodic ghost (fluid/periodic.hpp) is its source's unknown.
+  const std::size_t n = P.real_count();
   row_of_.assign(n, -1);
   particle_of_.clear();
   for (std::size_t i = 0; i < n; ++i)
@@ -113,7 +115,7 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
         const double mu_ij = mu_i == mu_j ? mu_i : 2.0 * mu_i * mu_j / (mu_i + mu_j);
         const double a = dt * c * mu_ij * w;
         diagonal += a;
-        entries.emplace_back(row_of_[j], -a);
+        entries.emplace_back(row_of_[P.real_index(j)], -a);
       } else if (wall.slip == WallSlip::no_slip) {
         const double d_j = P.wall_depth[j];
         const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;

@@ -384,8 +384,10 @@ TEST(Periodic, OneAndTwoThreadsGiveIdenticalStates) {
 // Body-force-driven plane Poiseuille flow between no-slip walls (mirror wall pressure, the defaults), periodic in
 // x, from rest over six decay times: every row is uniform in x to round-off (the particles next to the ends see the
 // same neighbourhood as the middle ones), the profile is symmetric about the centreline, and it follows
-// u = g y (H - y) / (2 nu) within 5 % of the centreline speed (what is left is the wall model's, not the period's:
-// the no-slip mirror's factor is capped at 1.5 for the first rows, fluid/viscosity.hpp).
+// u = g y (H - y) / (2 nu) within 0.9 % of the centreline speed. Measured 0.81 %: the discrete steady state's own
+// error is 0.25 % (tests/test_viscosity.cpp, the same wall model), the rest is what is left of the start from rest
+// after six decay times (the slowest mode's e^-6 ~ 0.25 %); with Morris et al.'s cap of the mirror factor at 1.5,
+// replaced since, it was 4.1 %.
 TEST(Periodic, PoiseuilleFlowIsUniformInX) {
   const int nx = 8, ny = 20;
   const double mu = 10.0, g = 0.2;
@@ -420,7 +422,7 @@ TEST(Periodic, PoiseuilleFlowIsUniformInX) {
   EXPECT_LT(spread, 1e-12 * u_max);
   EXPECT_LT(asymmetry, 1e-9 * u_max);
   EXPECT_LT(worst_v, 1e-12 * u_max);
-  EXPECT_LT(worst_profile, 0.05);
+  EXPECT_LT(worst_profile, 0.0081 * 1.1 + 1e-4);
 }
 
 }  // namespace
