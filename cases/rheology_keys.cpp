@@ -15,7 +15,7 @@ std::vector<std::pair<std::string, Schema>> yield_keys() {
                                    regularisation_names.names(), "papanastasiou")},
       {"papanastasiou_exponent", S::number("Papanastasiou's m: the viscosity at rest is tau_y m", "s", 1000.0, 0.0,
                                            inf, true)},
-      {"max_viscosity", S::number("bi_viscosity: the cap of the yield term", "Pa s", 1.0e4, 0.0, inf, true)},
+      {"max_viscosity", S::number("cap of the yield term (bi_viscosity) or of eta (granular)", "Pa s", 1.0e4, 0.0, inf, true)},
       {"max_power_law_viscosity", S::number("cap of the power-law term K g^(n-1) for n < 1 (it diverges at rest)",
                                             "Pa s", 1.0e4, 0.0, inf, true)},
   };
@@ -70,8 +70,8 @@ Schema rheology_schema() {
                     "newtonian");
 }
 
-Rheology read_rheology(const YAML::Node& r) {
-  switch (rheology_model_names.parse(r["model"].as<std::string>())) {
+Rheology read_rheology(RheologyModel model, const YAML::Node& r) {
+  switch (model) {
     case RheologyModel::newtonian: return Newtonian{r["viscosity"].as<double>()};
     case RheologyModel::herschel_bulkley:
       return HerschelBulkley{r["yield_stress"].as<double>(), r["consistency"].as<double>(), r["flow_index"].as<double>(),
@@ -87,6 +87,38 @@ Rheology read_rheology(const YAML::Node& r) {
                          r["min_viscosity"].as<double>()};
   }
   throw std::logic_error("unknown rheology model");
+}
+
+Rheology read_rheology(const YAML::Node& r) {
+  return read_rheology(rheology_model_names.parse(r["model"].as<std::string>()), r);
+}
+
+Schema rheology_parameters_schema() {
+  // The union of the variants' keys, each with the variant's default; required keys get a default here (their
+  // model's key is then simply read): consistency 0 (a plastic without viscosity beyond its regularisation),
+  // friction_angle 30 degrees.
+  std::vector<std::pair<std::string, Schema>> fields;
+  auto add = [&](const std::string& name, Schema s) {
+    for (const auto& f : fields)
+      if (f.first == name) return;
+    fields.emplace_back(name, std::move(s));
+  };
+  add("viscosity", S::number("newtonian: dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf));
+  add("yield_stress", S::number("herschel_bulkley: yield stress tau_y", "Pa", 0.0, 0.0, inf));
+  add("consistency", S::number("herschel_bulkley, mohr_coulomb: consistency K", "Pa s^n", 0.0, 0.0, inf));
+  add("flow_index", S::number("herschel_bulkley, mohr_coulomb: flow index n", "", 1.0, 0.0, inf, true));
+  add("cohesion", S::number("mohr_coulomb: cohesion c", "Pa", 0.0, 0.0, inf));
+  add("friction_angle", S::number("mohr_coulomb: internal friction angle phi", "deg", 30.0, 0.0, 90.0, false, true));
+  for (auto& f : yield_keys()) add(f.first, f.second);
+  add("mu_s", S::number("granular: static friction coefficient", "", 0.38, 0.0, inf));
+  add("mu_2", S::number("granular: limiting friction coefficient", "", 0.64, 0.0, inf));
+  add("i0", S::number("granular: inertial number scale I0", "", 0.279, 0.0, inf, true));
+  add("grain_diameter", S::number("granular: grain diameter d", "m", 0.53e-3, 0.0, inf, true));
+  add("grain_density", S::number("granular: grain density rho_s", "kg/m^3", 2450.0, 0.0, inf, true));
+  add("min_viscosity", S::number("granular: floor of eta where the pressure vanishes", "Pa s", 0.0, 0.0, inf));
+  return S::map("rheology parameters of a deformable slide, for the model its `model` key names (the keys of the "
+                "others are ignored); fluid/rheology/*.hpp",
+                std::move(fields), false);
 }
 
 }  // namespace slide::cases

@@ -28,4 +28,9 @@ Schema rheology_schema();
 // A resolved `rheology` node as the model it names.
 Rheology read_rheology(const YAML::Node& resolved);
 
+// Every model's keys in one map with defaults (a deformable slide's `rheology`: its model is named by the slide's
+// own `model` key, so that switching the model is one key and the parameters stay in the scene).
+Schema rheology_parameters_schema();
+Rheology read_rheology(RheologyModel model, const YAML::Node& resolved_parameters);
+
 }  // namespace slide::cases

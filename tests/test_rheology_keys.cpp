@@ -64,5 +64,19 @@ TEST(RheologyKeys, ModelNamesMatchTheRheologyTypes) {
   }
 }
 
+// A slide's flat parameter map: the model is named elsewhere; each model reads its keys from the same map.
+TEST(RheologyKeys, FlatParametersServeEveryModel) {
+  const YAML::Node p = rheology_parameters_schema().resolve(
+      YAML::Load("{yield_stress: 200, consistency: 3, friction_angle: 35, mu_s: 0.5}"));
+  const auto hb = std::get<HerschelBulkley>(read_rheology(RheologyModel::herschel_bulkley, p));
+  EXPECT_EQ(hb.yield_stress_pa, 200.0);
+  EXPECT_EQ(hb.consistency_pa_s_n, 3.0);
+  const auto mc = std::get<MohrCoulomb>(read_rheology(RheologyModel::mohr_coulomb, p));
+  EXPECT_EQ(mc.friction_angle_deg, 35.0);
+  EXPECT_EQ(std::get<GranularMuI>(read_rheology(RheologyModel::granular, p)).mu_s, 0.5);
+  EXPECT_EQ(std::get<Newtonian>(read_rheology(RheologyModel::newtonian, p)).viscosity_pa_s, 1e-3);
+  EXPECT_THROW(rheology_parameters_schema().resolve(YAML::Load("{yeld_stress: 1}")), SceneError);
+}
+
 }  // namespace
 }  // namespace slide::cases
