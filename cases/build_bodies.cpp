@@ -10,6 +10,8 @@
 #include <map>
 #include <sstream>
 
+#include "cases/body_choices.hpp"
+#include "cases/body_model.hpp"
 #include "cases/scene_build.hpp"
 #include "fluid/walls.hpp"
 
@@ -105,8 +107,7 @@ rigid::BodySpec rigid_spec(const YAML::Node& bn, const std::vector<rigid::Vec2>&
   spec.friction = bn["friction"].as<double>();
   spec.restitution = bn["restitution"].as<double>();
   for (const auto& l : bn["locked"]) {
-    const std::string c = l.as<std::string>();
-    spec.locked[c == "x" ? 0 : c == "y" ? 1 : 2] = true;
+    spec.locked[static_cast<std::size_t>(locked_component_names.parse(l.as<std::string>()))] = true;
   }
   return spec;
 }
@@ -117,7 +118,7 @@ rigid::PrescribedMotion read_prescribed(const SceneBuild& b, const YAML::Node& b
   if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
   const YAML::Node pr = bn["prescribed"];
   const rigid::Vec2 c = rigid::centroid(outline);
-  if (pr["type"].as<std::string>() != "series") {
+  if (prescribed_law_names.parse(pr["type"].as<std::string>()) == PrescribedLaw::ln_cosh) {
     const Vec<2> d = vec2(pr["direction"]);
     if (d.norm() == 0.0) throw SceneError(path + ".prescribed.direction", "must not be zero");
     return rigid::PrescribedMotion::ln_cosh(c, 0.0, to_rigid(d), pr["s0"].as<double>(), pr["t0"].as<double>(),
@@ -148,7 +149,8 @@ BodyMotion read_motion(const SceneBuild& b, const YAML::Node& bn, const std::str
   BodyMotion motion;
   motion.release_time = bn["release_time"].as<double>();
   motion.mode = BodyMotion::mode_names.parse(bn["motion"].as<std::string>());
-  motion.free_while_settling = bn["during_settling"].as<std::string>() == "free";
+  motion.free_while_settling =
+      during_settling_names.parse(bn["during_settling"].as<std::string>()) == DuringSettling::free;
   if (motion.free_while_settling) {
     if (motion.mode != BodyMotion::Mode::free)
       throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
@@ -291,7 +293,11 @@ void build_slides_and_bodies(SceneBuild& b) {
     names[name] = k;
     const std::vector<rigid::Vec2> outline = body_outline(bn, path);
     check_in_front_of_walls(b, outline, path);
-    add_rigid_body(b, bn, path, outline);
+    switch (body_model_names.parse(bn["model"].as<std::string>())) {
+      case BodyModel::rigid:
+        add_rigid_body(b, bn, path, outline);
+        break;
+    }
     b.outlines.push_back(outline);
   }
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cases/scene_build.hpp"
+#include "cases/wall_side.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
@@ -68,7 +69,7 @@ void build_walls(SceneBuild& b) {
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];
     const auto face = points_of(wn["points"]);
-    const bool left = wn["fluid_side"].as<std::string>() == "left";
+    const bool left = fluid_side_names.parse(wn["fluid_side"].as<std::string>()) == FluidSide::left;
     const std::vector<BoundaryPoint> pts = wall_points(b, wn, w, face, left);
     for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
     add_wall_particles(b, pts, w);

@@ -2,8 +2,11 @@
 // (`slide schema`).
 #include <limits>
 
+#include "cases/body_choices.hpp"
+#include "cases/body_model.hpp"
 #include "cases/initial_state.hpp"
 #include "cases/scene.hpp"
+#include "cases/wall_side.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/fluid_options.hpp"
 
@@ -51,7 +54,7 @@ Schema wall_schema() {
       {{"name", S::text("name used in messages", "")},
        {"points", point_list("vertices of the face polyline", 2)},
        {"fluid_side", S::choice("side of the polyline (walking from the first vertex) where the fluid is",
-                                {"left", "right"}, "left")},
+                                fluid_side_names.names(), std::string(to_string(FluidSide::left)))},
        {"layers",
         S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel", 0L, 0L, 10L)}});
 }
@@ -61,7 +64,8 @@ Schema body_schema() {
       "a slide or floating body; model rigid makes it a Bullet rigid body whose boundary particles (wall layer + "
       "dummies inside its outline) exchange forces with the fluid",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
-       {"model", S::choice("what the body is made of", {"rigid"}, "rigid")},
+       {"model",
+        S::choice("what the body is made of", body_model_names.names(), std::string(to_string(BodyModel::rigid)))},
        {"shape",
         S::variant(
             "outline of the body (convex)", "type",
@@ -74,18 +78,19 @@ Schema body_schema() {
        {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, inf)},
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
-       {"motion", S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
-                            "the law in `prescribed`",
-                            BodyMotion::mode_names.names(), "free")},
-       {"locked",
-        S::list("components held fixed (free motion)", S::choice("component", {"x", "y", "rotation"}, std::nullopt))},
+       {"motion",
+        S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
+                  "the law in `prescribed`",
+                  BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
+       {"locked", S::list("components held fixed (free motion)",
+                          S::choice("component", locked_component_names.names(), std::nullopt))},
        {"release_time",
         S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
                                      "put while the water settles; free lets a free body float with the water under "
                                      "the same damping, so that t = 0 finds it at rest where the water holds it (a "
                                      "floating body's equilibrium)",
-                                     {"held", "free"}, "held")},
+                                     during_settling_names.names(), std::string(to_string(DuringSettling::held)))},
        {"prescribed",
         S::map(
             "prescribed motion (motion: prescribed)",
@@ -93,7 +98,7 @@ Schema body_schema() {
               S::choice("series: a CSV time series (time,x,y,angle[,vx,vy,omega] of the centre of mass, as in "
                         "bodies.csv) interpolated by cubic Hermite; ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) "
                         "along `direction`",
-                        {"series", "ln_cosh"}, "series")},
+                        prescribed_law_names.names(), std::string(to_string(PrescribedLaw::series)))},
              {"file", S::text("series: CSV file, relative to the scene file", "")},
              {"body", S::text("series: rows whose body column equals this (default: this body's name)", "")},
              {"direction", S::vector("ln_cosh: direction of travel", "", 2, std::vector<double>{1.0, -1.0})},
