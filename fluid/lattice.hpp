@@ -35,7 +35,7 @@ inline double row_spacing(LatticeKind k, double dp) {
 
 // Lattice point (i, j) in 2-D, anchored so that the square lattice's cells tile the plane from the origin:
 // square: ((i + 1/2) dp, (j + 1/2) dp); hexagonal: rows at (j + 1/2) h, odd rows shifted by half a spacing,
-// x = (i + 1/2 + (j mod 2) / 2) a. The whole lattice is then moved by `offset` (cases/scene.cpp moves the rows to
+// x = (i + 1/2 + (j mod 2) / 2) a. The whole lattice is then moved by `offset` (cases/build_walls.cpp moves the rows to
 // meet a body's bottom, row_offset_to_meet below).
 inline Vec<2> lattice_point(LatticeKind k, double dp, long i, long j, const Vec<2>& offset = Vec<2>::Zero()) {
   if (k == LatticeKind::square) return Vec<2>((i + 0.5) * dp, (j + 0.5) * dp) + offset;

@@ -4,9 +4,12 @@
 
 #include <set>
 
+#include "cases/body_choices.hpp"
+#include "cases/body_model.hpp"
 #include "cases/initial_state.hpp"
 #include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
+#include "cases/wall_side.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/fluid_options.hpp"
 
@@ -37,6 +40,11 @@ TEST(NameTable, EveryOptionReadsBackAsItself) {
   expect_round_trip(viscous_scheme_names);
   expect_round_trip(cases::rheology_model_names);
   expect_round_trip(cases::regularisation_names);
+  expect_round_trip(cases::body_model_names);
+  expect_round_trip(cases::during_settling_names);
+  expect_round_trip(cases::prescribed_law_names);
+  expect_round_trip(cases::locked_component_names);
+  expect_round_trip(cases::fluid_side_names);
 }
 
 // The reference document lists a choice's names as "one of: a, b, ...": each table's names appear there, in order.
@@ -53,6 +61,11 @@ TEST(NameTable, SchemaOffersTheTablesNames) {
   EXPECT_TRUE(listed(wall_pressure_names.names()));
   EXPECT_TRUE(listed(cases::initial_state_names.names()));
   EXPECT_TRUE(listed(BodyMotion::mode_names.names()));
+  EXPECT_TRUE(listed(cases::body_model_names.names()));
+  EXPECT_TRUE(listed(cases::during_settling_names.names()));
+  EXPECT_TRUE(listed(cases::prescribed_law_names.names()));
+  EXPECT_TRUE(listed(cases::locked_component_names.names()));
+  EXPECT_TRUE(listed(cases::fluid_side_names.names()));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cases/check_report.hpp"
 #include "cases/scene.hpp"
 #include "coupling/free_surface_gauge.hpp"
 #include "coupling/rigid_bodies.hpp"
@@ -72,72 +73,12 @@ std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
   }
 }
 
-double memory_estimate_mb(const Simulation<2>& sim) {
-  const std::size_t n = sim.particles.size();  // periodic ghosts included: they take memory
-  const std::size_t per_particle = 4 * sizeof(Vec<2>) + 5 * sizeof(double) + 2 + 4 + sizeof(Vec<2>) + 8;
-  const std::size_t list = n * sim.neighbors().capacity * sizeof(std::uint32_t) + n * 4;
-  // The run keeps one more copy of the particles as the last good state, and a position copy for the skin test.
-  return (2.0 * n * per_particle + n * sizeof(Vec<2>) * 2 + list) / 1.0e6;
-}
-
 }  // namespace
 
 int check_command(const RunArguments& args) {
   const std::unique_ptr<cases::Scene> scene = load_or_report(args);
   if (!scene) return 2;
-  const auto& sim = *scene->simulation;
-  const auto [dt, limit] = sim.allowed_time_step();
-  const auto& o = sim.options;
-  std::cout << fmt::format(
-      "case            {}\n"
-      "particles       {} total: {} fluid, {} wall, {} dummy\n"
-      "spacing dp      {} m, kernel radius re = {} dp = {} m\n"
-      "lattice         {} (nearest spacing {:.6g} dp){}\n"
-      "n0, lambda      {:.9g}, {:.9g} m^2 (lambda / dp^2 = {:.6g})\n"
-      "sound speed c0  {:.6g} m/s ({})\n"
-      "gradient model  {}\n"
-      "initial dt      {:.6g} s, limited by {}\n"
-      "end time        {} s (about {:.0f} steps at the initial dt)\n"
-      "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
-      "memory          about {:.1f} MB\n"
-      "{}",
-      scene->name, sim.particles.real_count(), scene->fluid_count, scene->wall_count, scene->dummy_count, o.dp,
-      o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
-      scene->lattice_offset[1] != 0.0
-          ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene->lattice_offset[1])
-          : std::string(),
-      sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
-      scene->sound_speed_source, to_string(o.gradient), dt, to_string(limit),
-      scene->end_time, scene->end_time / dt, o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1],
-      memory_estimate_mb(sim),
-      scene->equilibrium
-          ? fmt::format("hydrostatic start: equilibrium column relaxed for {:.4g} s ({} steps), residual row speed "
-                        "{:.3g} m/s\n",
-                        scene->equilibrium->relaxation_time, scene->equilibrium->steps,
-                        scene->equilibrium->residual_speed)
-          : std::string());
-  if (scene->settling)
-    std::cout << fmt::format("settled start: {:.4g} s of settling at damping {:.4g} 1/s ({} steps), largest speed {:.3g} m/s, "
-                             "residual speed {:.3g} m/s, largest shift {:.3g} dp\n",
-                             scene->settling->duration, scene->settling->damping_rate, scene->settling->steps,
-                             scene->settling->largest_speed, scene->settling->residual_speed,
-                             scene->settling->largest_shift / o.dp);
-  for (const auto& b : scene->bodies)
-    std::cout << fmt::format(
-        "body {:<10} {} motion, {} boundary particles\n"
-        "  mass            {:.6g} kg/m (lattice sum {:.6g}), inertia {:.6g} kg m (lattice sum {:.6g})\n"
-        "  area            {:.6g} m^2, displaced below the still-water level {:.6g} m^2, buoyancy / weight {:.4g}\n",
-        b.name, b.motion, b.particles, b.mass, b.mass_particles, b.inertia, b.inertia_particles, b.area,
-        b.displaced_area, b.buoyancy_ratio);
-  for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
-    const auto& b = scene->bodies[k];
-    if (!b.free_while_settling || !scene->settling) continue;
-    const auto s = sim.bodies()->state(static_cast<int>(k));
-    std::cout << fmt::format("  settled with the water: centre ({:.6g}, {:.6g}) m, angle {:.4g} deg, {:.3g} mm from "
-                             "where it was put\n",
-                             s.position[0], s.position[1], s.angle * 180.0 / M_PI,
-                             1000.0 * (Vec<2>(s.position[0], s.position[1]) - b.placed).norm());
-  }
+  std::cout << cases::check_report(*scene);
   return 0;
 }
 

@@ -1,0 +1,313 @@
+// Step: the bodies (bodies[]). A slide or floating body is declared once with its outline; its `model` decides what
+// fills the outline (build_slides_and_bodies). model rigid: a Bullet rigid body (mass and inertia from the outline,
+// free or prescribed motion) whose boundary particles (wall layer + dummies inside the outline) exchange forces with
+// the fluid. Also the bodies' report for `slide check`.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "cases/body_choices.hpp"
+#include "cases/body_model.hpp"
+#include "cases/scene_build.hpp"
+#include "fluid/walls.hpp"
+
+namespace slide::cases {
+namespace {
+
+std::vector<std::string> split_csv_line(const std::string& l) {
+  std::vector<std::string> out;
+  std::stringstream ss(l);
+  std::string c;
+  while (std::getline(ss, c, ',')) out.push_back(c);
+  return out;
+}
+
+// Reads a prescribed-motion series: a CSV with a header naming at least time, x, y, angle (vx, vy, omega and body
+// optional), as bodies.csv has them.
+rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, const std::string& body,
+                                           const std::string& key) {
+  std::ifstream in(file);
+  if (!in) throw SceneError(key, "cannot read " + file.string());
+  std::string line;
+  std::vector<std::string> header;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') {
+      header = split_csv_line(line);
+      break;
+    }
+  auto col = [&](const std::string& name) -> int {
+    for (std::size_t k = 0; k < header.size(); ++k)
+      if (header[k] == name) return static_cast<int>(k);
+    return -1;
+  };
+  const int ct = col("time"), cx = col("x"), cy = col("y"), ca = col("angle"), cvx = col("vx"), cvy = col("vy"),
+            cw = col("omega"), cb = col("body");
+  if (ct < 0 || cx < 0 || cy < 0 || ca < 0)
+    throw SceneError(key, file.string() + ": the header must name the columns time, x, y and angle");
+  const bool has_velocity = cvx >= 0 && cvy >= 0 && cw >= 0;
+  std::vector<rigid::MotionSample> samples;
+  long row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty() || line[0] == '#') continue;
+    const auto f = split_csv_line(line);
+    if (cb >= 0 && (cb >= int(f.size()) || f[cb] != body)) continue;
+    try {
+      rigid::MotionSample m;
+      m.time = std::stod(f.at(ct));
+      m.state.position = rigid::Vec2(std::stod(f.at(cx)), std::stod(f.at(cy)));
+      m.state.angle = std::stod(f.at(ca));
+      if (has_velocity) {
+        m.state.velocity = rigid::Vec2(std::stod(f.at(cvx)), std::stod(f.at(cvy)));
+        m.state.angular_velocity = std::stod(f.at(cw));
+      }
+      // Repeated times (a run's last row written twice) keep the first.
+      if (!samples.empty() && m.time <= samples.back().time) continue;
+      samples.push_back(m);
+    } catch (const std::exception&) {
+      throw SceneError(key, fmt::format("{}: row {} is not numeric", file.string(), row));
+    }
+  }
+  if (samples.size() < 2)
+    throw SceneError(key, fmt::format("{}: fewer than two rows for body \"{}\"", file.string(), body));
+  return rigid::PrescribedMotion::from_samples(std::move(samples), has_velocity);
+}
+
+// The Bullet world, with the wall faces as static segments when bodies collide with the walls.
+std::shared_ptr<RigidBodies> make_rigid_world(const SceneBuild& b) {
+  auto bodies = std::make_shared<RigidBodies>(b.sim->options.gravity,
+                                              b.r["rigid"]["collision_margin"].as<double>() * b.dp);
+  if (b.r["rigid"]["wall_contact"].as<bool>())
+    for (const auto& f : b.faces)
+      bodies->world.add_static_segment(to_rigid(f.a), to_rigid(f.b), to_rigid(-f.inward), 10.0 * b.dp, 1.0, 1.0);
+  return bodies;
+}
+
+void check_in_front_of_walls(const SceneBuild& b, const std::vector<rigid::Vec2>& outline, const std::string& path) {
+  for (const auto& v : outline)
+    if (!b.faces.empty() && signed_face_distance(b.faces, from_rigid(v)) < -1e-6 * b.dp)
+      throw SceneError(path + ".shape", fmt::format("vertex ({:.6g}, {:.6g}) lies behind a wall face", v[0], v[1]));
+}
+
+// Mass and inertia per unit width from the outline and density or mass, friction, restitution, locked components.
+rigid::BodySpec rigid_spec(const YAML::Node& bn, const std::vector<rigid::Vec2>& outline, const std::string& path) {
+  const double area = rigid::signed_area(outline);
+  const double density_key = bn["density"].as<double>(), mass_key = bn["mass"].as<double>();
+  if ((density_key > 0) == (mass_key > 0))
+    throw SceneError(path + ".density", "give exactly one of density and mass (per unit width), both positive");
+  rigid::BodySpec spec;
+  spec.outline = outline;
+  spec.mass = mass_key > 0 ? mass_key : density_key * area;
+  const double density = spec.mass / area;
+  spec.inertia = density * rigid::polar_moment_about_centroid(outline);
+  spec.friction = bn["friction"].as<double>();
+  spec.restitution = bn["restitution"].as<double>();
+  for (const auto& l : bn["locked"]) {
+    spec.locked[static_cast<std::size_t>(locked_component_names.parse(l.as<std::string>()))] = true;
+  }
+  return spec;
+}
+
+// The law of a prescribed body (bodies[k].prescribed): a series from a CSV file, or ln_cosh.
+rigid::PrescribedMotion read_prescribed(const SceneBuild& b, const YAML::Node& bn, const std::string& path,
+                                        const std::vector<rigid::Vec2>& outline) {
+  if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
+  const YAML::Node pr = bn["prescribed"];
+  const rigid::Vec2 c = rigid::centroid(outline);
+  if (prescribed_law_names.parse(pr["type"].as<std::string>()) == PrescribedLaw::ln_cosh) {
+    const Vec<2> d = vec2(pr["direction"]);
+    if (d.norm() == 0.0) throw SceneError(path + ".prescribed.direction", "must not be zero");
+    return rigid::PrescribedMotion::ln_cosh(c, 0.0, to_rigid(d), pr["s0"].as<double>(), pr["t0"].as<double>(),
+                                            pr["start_time"].as<double>());
+  }
+  const std::string file = pr["file"].as<std::string>();
+  if (file.empty()) throw SceneError(path + ".prescribed.file", "a series needs a CSV file");
+  const std::string name = bn["name"].as<std::string>();
+  const std::string who = pr["body"].as<std::string>().empty() ? name : pr["body"].as<std::string>();
+  const auto m = read_motion_series(b.scene_dir / file, who, path + ".prescribed.file");
+  const double end_time = b.r["end_time"].as<double>();
+  if (m.first_time() > 1e-9 || m.last_time() < end_time - 1e-9)
+    throw SceneError(path + ".prescribed.file",
+                     fmt::format("the series covers [{:.6g}, {:.6g}] s, which must include [0, end_time = {:.6g}] s",
+                                 m.first_time(), m.last_time(), end_time));
+  const rigid::PlanarState s0 = m.at(0.0);
+  if ((s0.position - c).norm() > 0.01 * b.dp || std::abs(s0.angle) > 1e-6)
+    throw SceneError(path + ".prescribed.file",
+                     fmt::format("the series starts at ({:.6g}, {:.6g}), angle {:.3g}, but the body's centre of "
+                                 "mass is at ({:.6g}, {:.6g}), angle 0",
+                                 s0.position[0], s0.position[1], s0.angle, c[0], c[1]));
+  return m;
+}
+
+// How the body moves: free or prescribed, held until release_time, held or free while the water settles.
+BodyMotion read_motion(const SceneBuild& b, const YAML::Node& bn, const std::string& path,
+                       const std::vector<rigid::Vec2>& outline) {
+  BodyMotion motion;
+  motion.release_time = bn["release_time"].as<double>();
+  motion.mode = BodyMotion::mode_names.parse(bn["motion"].as<std::string>());
+  motion.free_while_settling =
+      during_settling_names.parse(bn["during_settling"].as<std::string>()) == DuringSettling::free;
+  if (motion.free_while_settling) {
+    if (motion.mode != BodyMotion::Mode::free)
+      throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
+    if (motion.release_time > 0.0)
+      throw SceneError(path + ".during_settling", "free contradicts release_time > 0 (which holds the body)");
+    if (b.initial_state != InitialState::settled)
+      throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
+                                                  "otherwise)");
+  }
+  if (motion.mode == BodyMotion::Mode::prescribed) motion.prescribed = read_prescribed(b, bn, path, outline);
+  return motion;
+}
+
+// Boundary points of a body: the outline as a closed face with the fluid outside, layers inside. Acute corners (a
+// wedge's tip): the first layer's mitred corner lies 0.5 dp / sin(angle / 2) inside the tip, which leaves the tip
+// hollow, and fluid could slip into it. One more wall particle on the bisector, 0.55 dp nearer the tip, closes it.
+std::vector<BoundaryPoint> body_boundary_points(const std::vector<rigid::Vec2>& outline, double dp, int layers) {
+  std::vector<Vec<2>> face;
+  for (const auto& v : outline) face.push_back(from_rigid(v));
+  face.push_back(face.front());
+  auto pts = polyline_boundary(face, false, dp, layers);
+  for (std::size_t k = 0; k < outline.size(); ++k) {
+    const Vec<2> v = from_rigid(outline[k]);
+    const Vec<2> a = (from_rigid(outline[(k + outline.size() - 1) % outline.size()]) - v).normalized();
+    const Vec<2> c = (from_rigid(outline[(k + 1) % outline.size()]) - v).normalized();
+    const double angle = std::acos(std::clamp(a.dot(c), -1.0, 1.0));
+    if (angle >= 0.5 * M_PI) continue;
+    const Vec<2> inward = (a + c).normalized();
+    const double s = 0.5 * dp / std::sin(0.5 * angle) - 0.55 * dp;
+    if (s < 0.5 * dp) continue;
+    pts.push_back({v + s * inward, -inward, s, 0});
+  }
+  return pts;
+}
+
+// The body's boundary particles (those inside the outline, none within dp/2 of another), moving with body `body`.
+// Returns how many were added.
+std::size_t add_body_particles(SceneBuild& b, const std::vector<BoundaryPoint>& pts,
+                               const std::vector<rigid::Vec2>& outline, int body, double density,
+                               const std::string& path) {
+  Particles<2>& P = b.particles();
+  const double dp = b.dp;
+  const Vec<2> c = from_rigid(rigid::centroid(outline));
+  const std::size_t first = P.size();
+  for (const auto& bp : pts) {
+    bool duplicate = false;
+    for (std::size_t i = first; i < P.size() && !duplicate; ++i)
+      duplicate = distance_squared<2>(P.position[i], bp.position) < 0.25 * dp * dp;
+    if (duplicate || !rigid::contains(outline, to_rigid(bp.position))) continue;
+    const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, 0.0);
+    P.wall_normal[i] = bp.normal;
+    P.wall_depth[i] = bp.depth;
+    P.body[i] = body;
+    P.body_offset[i] = bp.position - c;
+    P.body_normal[i] = bp.normal;
+    b.boundary_owner.push_back(path);
+  }
+  return P.size() - first;
+}
+
+// model: rigid. A Bullet body, its boundary particles, and its report.
+void add_rigid_body(SceneBuild& b, const YAML::Node& bn, const std::string& path,
+                    const std::vector<rigid::Vec2>& outline) {
+  rigid::BodySpec spec = rigid_spec(bn, outline, path);
+  const BodyMotion motion = read_motion(b, bn, path, outline);
+  spec.kinematic = motion.mode == BodyMotion::Mode::prescribed;
+  const double area = rigid::signed_area(outline);
+  const double density = spec.mass / area;
+  const std::string name = bn["name"].as<std::string>();
+  const int body = b.bodies->add(name, spec, motion, density);
+  const auto pts = body_boundary_points(outline, b.dp, boundary_layers(b.sim->options.re_over_dp));
+  BodyReport rep;
+  rep.name = name;
+  rep.motion = std::string(BodyMotion::mode_names.name(motion.mode));
+  rep.area = area;
+  rep.mass = spec.mass;
+  rep.inertia = spec.inertia;
+  rep.particles = add_body_particles(b, pts, outline, body, density, path);
+  rep.placed = from_rigid(rigid::centroid(outline));
+  rep.free_while_settling = motion.free_while_settling;
+  b.scene->bodies.push_back(rep);
+}
+
+// Mass and inertia summed over a dp lattice filling the outline, beside the outline's own, and the buoyancy at the
+// still-water level.
+void add_lattice_sums(BodyReport& rep, const std::vector<rigid::Vec2>& v, double dp, double level,
+                      double water_density) {
+  const double density = rep.mass / rep.area;
+  const rigid::Vec2 c = rigid::centroid(v);
+  rigid::Vec2 lo = v[0], hi = v[0];
+  for (const auto& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (long j = long(std::floor(lo[1] / dp)) - 1; j <= long(std::ceil(hi[1] / dp)) + 1; ++j)
+    for (long i = long(std::floor(lo[0] / dp)) - 1; i <= long(std::ceil(hi[0] / dp)) + 1; ++i) {
+      const rigid::Vec2 p((i + 0.5) * dp, (j + 0.5) * dp);
+      if (!rigid::contains(v, p)) continue;
+      rep.mass_particles += density * dp * dp;
+      rep.inertia_particles += density * dp * dp * (p - c).squaredNorm();
+    }
+  if (std::isfinite(level)) {
+    rep.displaced_area = area_below(v, level);
+    rep.buoyancy_ratio = water_density * rep.displaced_area / rep.mass;
+  } else {
+    rep.buoyancy_ratio = NAN;
+  }
+}
+
+}  // namespace
+
+std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& path) {
+  std::vector<rigid::Vec2> outline;
+  const YAML::Node sh = bn["shape"];
+  if (sh["type"].as<std::string>() == "box") {
+    const Vec<2> c = vec2(sh["center"]), size = vec2(sh["size"]);
+    if (!(size[0] > 0 && size[1] > 0)) throw SceneError(path + ".shape.size", "width and height must be positive");
+    const double a = sh["angle"].as<double>() * M_PI / 180.0, ca = std::cos(a), sa = std::sin(a);
+    for (const auto& corner : {Vec<2>(-0.5, -0.5), Vec<2>(0.5, -0.5), Vec<2>(0.5, 0.5), Vec<2>(-0.5, 0.5)}) {
+      const Vec<2> l(corner[0] * size[0], corner[1] * size[1]);
+      outline.push_back(to_rigid(c + Vec<2>(ca * l[0] - sa * l[1], sa * l[0] + ca * l[1])));
+    }
+  } else {
+    for (const auto& p : points_of(sh["points"])) outline.push_back(to_rigid(p));
+  }
+  outline = rigid::counter_clockwise(outline);
+  if (!rigid::is_convex_ccw(outline)) throw SceneError(path + ".shape", "the outline must be a convex polygon");
+  return outline;
+}
+
+// The decision point for what a body is made of: today every body is rigid (model: rigid); a slide of sediment
+// particles filling the same outline will be the other case here.
+void build_slides_and_bodies(SceneBuild& b) {
+  const YAML::Node list = b.r["bodies"];
+  if (list.size() == 0) return;
+  b.bodies = make_rigid_world(b);
+  std::map<std::string, std::size_t> names;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const YAML::Node bn = list[k];
+    const std::string path = fmt::format("bodies[{}]", k);
+    const std::string name = bn["name"].as<std::string>();
+    if (names.count(name)) throw SceneError(path + ".name", "duplicate body name \"" + name + "\"");
+    names[name] = k;
+    const std::vector<rigid::Vec2> outline = body_outline(bn, path);
+    check_in_front_of_walls(b, outline, path);
+    switch (body_model_names.parse(bn["model"].as<std::string>())) {
+      case BodyModel::rigid:
+        add_rigid_body(b, bn, path, outline);
+        break;
+    }
+    b.outlines.push_back(outline);
+  }
+}
+
+void finish_bodies(SceneBuild& b) {
+  for (std::size_t k = 0; k < b.scene->bodies.size(); ++k)
+    add_lattice_sums(b.scene->bodies[k], b.outlines[k], b.dp, b.still_level, b.phases.phases[0].density);
+  if (b.outlines.empty()) return;
+  b.sim->attach_bodies(std::move(b.bodies));
+  b.scene->body_sample_interval = b.r["output"]["body_interval"].as<double>();
+}
+
+}  // namespace slide::cases

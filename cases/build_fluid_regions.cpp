@@ -1,0 +1,133 @@
+// Step: the fluid regions (fluid.regions[]): rectangle, polygon and below_level, each filled with particles of its
+// phase on the lattice; then the overlap checks (water on a boundary particle, or two regions on each other).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "cases/scene_build.hpp"
+#include "fluid/neighbor_grid.hpp"
+
+namespace slide::cases {
+namespace {
+
+// The lattice points a region takes: those in [lo, hi] for which `inside` holds.
+struct RegionShape {
+  Vec<2> lo, hi;
+  std::function<bool(const Vec<2>&)> inside;
+};
+
+// The body whose outline holds p or lies within dp/2 of it; -1 when p is clear of every body.
+int body_near(const SceneBuild& b, const Vec<2>& p) {
+  for (std::size_t k = 0; k < b.outlines.size(); ++k) {
+    const rigid::Vec2 q(p[0], p[1]);
+    if (rigid::contains(b.outlines[k], q) || rigid::distance_to_outline(b.outlines[k], q) < 0.5 * b.dp - 1e-9 * b.dp)
+      return static_cast<int>(k);
+  }
+  return -1;
+}
+
+// The particles whose cell lies inside [min, max]. Half the extent of a particle's cell: dp / 2 on the square
+// lattice; half a spacing across and half a row spacing up on the hexagonal one.
+RegionShape rectangle(const SceneBuild& b, const YAML::Node& rn, const std::string& path) {
+  const Vec<2> lo = vec2(rn["min"]), hi = vec2(rn["max"]);
+  if (!(lo[0] < hi[0] && lo[1] < hi[1])) throw SceneError(path + ".max", "must exceed min in x and y");
+  const LatticeKind lattice = b.sim->options.lattice;
+  const double half_x = 0.5 * nearest_spacing(lattice, b.dp), half_y = 0.5 * row_spacing(lattice, b.dp);
+  const double e = 1e-9 * b.dp;
+  return {lo, hi, [lo, hi, half_x, half_y, e](const Vec<2>& p) {
+            return p[0] - half_x >= lo[0] - e && p[0] + half_x <= hi[0] + e && p[1] - half_y >= lo[1] - e &&
+                   p[1] + half_y <= hi[1] + e;
+          }};
+}
+
+// The particles whose centre lies inside the polygon.
+RegionShape polygon(const YAML::Node& rn) {
+  const std::vector<Vec<2>> poly = points_of(rn["points"]);
+  Vec<2> lo = poly[0], hi = poly[0];
+  for (const auto& q : poly) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  return {lo, hi, [poly](const Vec<2>& p) { return inside_polygon(poly, p); }};
+}
+
+// Water below a level inside the walls, clear of the bodies. On the hexagonal lattice the walls hold every lattice
+// point on or behind a face, the water every one in front of it; on the square lattice the water starts half a
+// spacing in front of the faces. Raises the still-water level to this one.
+RegionShape below_level(SceneBuild& b, const YAML::Node& rn, const std::string& path) {
+  if (b.faces.empty()) throw SceneError(path, "a below_level region needs walls around it");
+  const double level = rn["level"].as<double>();
+  Vec<2> face_lo, face_hi;
+  face_bounds(b.faces, face_lo, face_hi);
+  const double clearance = b.hexagonal ? 1e-9 * b.dp : 0.5 * b.dp - 1e-9 * b.dp;
+  b.still_level = std::max(b.still_level, level);
+  return {face_lo, Vec<2>(face_hi[0], std::min(level, face_hi[1])), [&b, level, clearance](const Vec<2>& p) {
+            return p[1] < level && signed_face_distance(b.faces, p) >= clearance && body_near(b, p) < 0;
+          }};
+}
+
+RegionShape region_shape(SceneBuild& b, const YAML::Node& rn, const std::string& path) {
+  const std::string type = rn["type"].as<std::string>();
+  if (type == "rectangle") return rectangle(b, rn, path);
+  if (type == "polygon") return polygon(rn);
+  return below_level(b, rn, path);
+}
+
+// Fills region k with fluid particles of phase `ph`; a lattice point on or near a body is an error.
+void fill_region(SceneBuild& b, std::size_t k, const RegionShape& shape, std::size_t ph, const std::string& path) {
+  Particles<2>& P = b.particles();
+  const auto& phase = b.phases.phases[ph];
+  std::size_t added = 0;
+  for_each_lattice_point(b.sim->options.lattice, b.dp, shape.lo, shape.hi, [&](const Vec<2>& p) {
+      if (!shape.inside(p)) return;
+      if (const int body = body_near(b, p); body >= 0)
+        throw SceneError(path, fmt::format("water at ({:.6g}, {:.6g}) lies inside body bodies[{}] or within dp/2 of "
+                                           "its outline",
+                                           p[0], p[1], body));
+      P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
+      b.region_of_particle.push_back(k);
+      ++added;
+    }, b.scene->lattice_offset);
+  if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", b.dp));
+}
+
+}  // namespace
+
+void fill_fluid_regions(SceneBuild& b) {
+  b.boundary_count = b.particles().size();
+  for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
+    const auto rn = b.r["fluid"]["regions"][k];
+    const std::string path = fmt::format("fluid.regions[{}]", k);
+    const std::size_t ph = b.phases.find(rn["phase"].as<std::string>(), path + ".phase");
+    fill_region(b, k, region_shape(b, rn, path), ph, path);
+  }
+  // The bounding box of the particles as placed (before the hydrostatic start moves them).
+  const Particles<2>& P = b.particles();
+  b.lo = b.hi = P.position[0];
+  for (const auto& x : P.position) b.lo = b.lo.cwiseMin(x), b.hi = b.hi.cwiseMax(x);
+}
+
+// Fluid particles closer than 0.75 dp to a boundary particle or to a particle of an earlier region.
+void check_overlaps(SceneBuild& b) {
+  const Particles<2>& P = b.particles();
+  const double dp = b.dp;
+  const std::size_t n_boundary = b.boundary_count;
+  NeighborGrid<2> g(b.lo - Vec<2>::Constant(dp), b.hi + Vec<2>::Constant(dp), dp);
+  g.bin(P.position);
+  for (std::size_t i = n_boundary; i < P.size(); ++i) {
+    const std::string path = fmt::format("fluid.regions[{}]", b.region_of_particle[i - n_boundary]);
+    g.for_each_near(P.position[i], 0.75 * dp, P.position, [&](std::uint32_t j, double r2) {
+      if (j == i) return;
+      if (j < n_boundary)
+        throw SceneError(path, fmt::format("water overlaps {}: a particle at ({:.6g}, {:.6g}) is {:.3g} dp "
+                                           "from one of its boundary particles (at least 0.75 dp needed)",
+                                           b.boundary_owner[j], P.position[i][0], P.position[i][1],
+                                           std::sqrt(r2) / dp));
+      if (j < i)
+        throw SceneError(path, fmt::format("overlaps fluid.regions[{}] at ({:.6g}, {:.6g})",
+                                           b.region_of_particle[j - n_boundary], P.position[i][0],
+                                           P.position[i][1]));
+    });
+  }
+}
+
+}  // namespace slide::cases

@@ -1,0 +1,117 @@
+// Step: how the water starts. The sound speed (from the scene, or 10 sqrt(g H) of the deepest water), the
+// hydrostatic start (columns compressed to the equilibrium column's spacing, floating bodies lowered with them), the
+// domain, and the settled start (damped settling before t = 0, coupling/relaxation.hpp).
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "cases/scene_build.hpp"
+#include "coupling/equilibrium_column.hpp"
+#include "coupling/relaxation.hpp"
+#include "fluid/hydrostatic_start.hpp"
+
+namespace slide::cases {
+namespace {
+
+double downward_gravity(const SceneBuild& b) { return -b.sim->options.gravity[1]; }
+
+// Floating bodies go down with the water they rest on (free bodies only: a prescribed one keeps its law).
+void lower_free_bodies(SceneBuild& b, const std::vector<double>& body_shift) {
+  Particles<2>& P = b.particles();
+  for (std::size_t k = 0; k < body_shift.size(); ++k) {
+    if (body_shift[k] == 0.0 || b.bodies->motion[k].mode != BodyMotion::Mode::free) continue;
+    b.bodies->world.translate(int(k), rigid::Vec2(0.0, body_shift[k]));
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.body[i] == int(k)) P.position[i][1] += body_shift[k];
+  }
+}
+
+}  // namespace
+
+void choose_sound_speed(SceneBuild& b) {
+  FluidOptions<2>& opt = b.options();
+  Scene& scene = *b.scene;
+  const double g = downward_gravity(b);
+  // A lattice column's particles are dp apart on the square lattice, two rows apart on the hexagonal one.
+  scene.deepest_water =
+      deepest_water<2>(b.particles(), b.dp, b.hexagonal ? 2.0 * row_spacing(opt.lattice, b.dp) : b.dp);
+  const double c0_key = b.r["method"]["sound_speed"].as<double>();
+  if (c0_key > 0.0) {
+    opt.sound_speed = c0_key;
+    scene.sound_speed_source = "method.sound_speed";
+    return;
+  }
+  if (g <= 0.0 || scene.deepest_water <= 0.0)
+    throw SceneError("method.sound_speed", "cannot default to 10 sqrt(g H) without downward gravity; set it");
+  opt.sound_speed = 10.0 * std::sqrt(g * scene.deepest_water);
+  scene.sound_speed_source =
+      fmt::format("default 10 sqrt(g H), H = {:.6g} m (deepest water), g = {:.6g} m/s^2", scene.deepest_water, g);
+}
+
+void start_hydrostatic(SceneBuild& b) {
+  const double g = downward_gravity(b);
+  if (b.initial_state == InitialState::settled && !(g > 0.0))
+    throw SceneError("method.initial_state", "a settled start needs downward gravity");
+  // The hexagonal lattice is compressed by settling alone (its columns are not the square lattice's runs).
+  if (b.initial_state == InitialState::lattice || !(g > 0.0) || b.hexagonal) return;
+  const FluidOptions<2>& opt = b.sim->options;
+  const double dp = b.dp, re = opt.re_over_dp * dp;
+  const LatticeConstants lc = lattice_constants<2>(dp, re);
+  const int rows = static_cast<int>(std::lround(b.scene->deepest_water / dp));
+  const auto& water = b.phases.phases[0];
+  try {
+    const EquilibriumColumn column = equilibrium_column(opt, water.density, water.viscosity, rows);
+    b.scene->equilibrium = column;
+    std::vector<double> body_shift;
+    compress_hydrostatically<2>(b.particles(), dp, re, EquationOfState(lc.n0, opt.sound_speed, opt.gamma), g, true,
+                                column.gap_from_top,
+                                std::isfinite(b.still_level) ? b.still_level
+                                                             : std::numeric_limits<double>::quiet_NaN(),
+                                &body_shift);
+    lower_free_bodies(b, body_shift);
+  } catch (const std::runtime_error& e) {
+    throw SceneError("method.initial_state", std::string("hydrostatic start failed: ") + e.what());
+  }
+}
+
+// The scene's domain, or the particles' bounding box as placed enlarged by 4 re on every side and by half its
+// height upwards.
+void set_domain(SceneBuild& b) {
+  FluidOptions<2>& opt = b.options();
+  const Particles<2>& P = b.particles();
+  const double re = opt.re_over_dp * b.dp;
+  if (!b.r["domain"]) {
+    opt.domain_lo = b.lo - Vec<2>::Constant(4 * re);
+    opt.domain_hi = b.hi + Vec<2>::Constant(4 * re) + Vec<2>(0.0, 0.5 * (b.hi[1] - b.lo[1]));
+    return;
+  }
+  opt.domain_lo = vec2(b.r["domain"]["min"]);
+  opt.domain_hi = vec2(b.r["domain"]["max"]);
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (int k = 0; k < 2; ++k)
+      if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
+        throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
+                                               P.position[i][0], P.position[i][1]));
+}
+
+void count_particles(SceneBuild& b) {
+  for (const Kind k : b.particles().kind) {
+    if (k == Kind::fluid) ++b.scene->fluid_count;
+    else if (k == Kind::wall) ++b.scene->wall_count;
+    else ++b.scene->dummy_count;
+  }
+}
+
+void settle(SceneBuild& b) {
+  if (b.initial_state != InitialState::settled) return;
+  const YAML::Node m = b.r["method"];
+  try {
+    b.scene->settling = relax_at_rest(*b.sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>());
+  } catch (const std::runtime_error& e) {
+    throw SceneError("method.initial_state", e.what());
+  }
+}
+
+}  // namespace slide::cases

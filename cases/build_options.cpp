@@ -1,0 +1,69 @@
+// Step: the fluid solver's options from the scene, one reader per part of FluidOptions (method, time step, checks),
+// and what the hexagonal lattice demands of the other choices.
+#include <fmt/format.h>
+
+#include "cases/scene_build.hpp"
+
+namespace slide::cases {
+namespace {
+
+// particle_spacing, lattice and method.* (the sound speed is chosen later, from the water: choose_sound_speed).
+void read_method(const YAML::Node& r, MethodOptions& o) {
+  const YAML::Node m = r["method"];
+  o.dp = r["particle_spacing"].as<double>();
+  o.lattice = lattice_kind_names.parse(r["lattice"].as<std::string>());
+  o.re_over_dp = m["kernel_radius"].as<double>();
+  o.skin_over_dp = m["neighbor_skin"].as<double>();
+  o.gradient = gradient_model_names.parse(m["gradient"].as<std::string>());
+  o.gamma = m["gamma"].as<double>();
+  o.free_surface_beta = m["free_surface_beta"].as<double>();
+  o.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
+  o.wall_slip = wall_slip_names.parse(m["wall_slip"].as<std::string>());
+  o.artificial_viscosity = m["artificial_viscosity"].as<double>();
+  o.collision_distance_over_dp = m["collision_distance"].as<double>();
+  o.collision_restitution = m["collision_restitution"].as<double>();
+  o.wall_pressure = wall_pressure_names.parse(m["wall_pressure"].as<std::string>());
+}
+
+// time_step.*
+void read_time_step(const YAML::Node& t, TimeStepOptions& o) {
+  o.cfl = t["cfl"].as<double>();
+  o.viscous_number = t["viscous_number"].as<double>();
+  o.force_number = t["force_number"].as<double>();
+  o.dt_max = t["max"].as<double>();
+}
+
+// checks.* (the domain is set once the particles are placed: set_domain).
+void read_checks(const YAML::Node& c, CheckOptions<2>& o) {
+  o.max_number_density_ratio = c["max_number_density_ratio"].as<double>();
+  o.max_speed_over_c0 = c["max_speed_over_c0"].as<double>();
+}
+
+}  // namespace
+
+void read_fluid_options(SceneBuild& b) {
+  FluidOptions<2>& opt = b.options();
+  read_method(b.r, opt);
+  read_time_step(b.r["time_step"], opt);
+  read_checks(b.r["checks"], opt);
+  opt.gravity = vec2(b.r["gravity"]);
+  b.dp = opt.dp;
+  b.hexagonal = opt.lattice == LatticeKind::hexagonal;
+  b.initial_state = initial_state_names.parse(b.r["method"]["initial_state"].as<std::string>());
+}
+
+void check_lattice_choices(SceneBuild& b) {
+  if (!b.hexagonal) return;
+  if (b.options().wall_pressure == WallPressure::mirror)
+    throw SceneError("method.wall_pressure", "the mirror model needs lattice: square (its images assume the square "
+                                             "lattice); use extrapolated or number_density with lattice: hexagonal");
+  if (b.initial_state == InitialState::hydrostatic)
+    throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
+                                             "compresses it); the column-wise hydrostatic start needs lattice: square");
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w)
+    if (b.r["walls"][w]["layers"].as<long>() != 0)
+      throw SceneError(fmt::format("walls[{}].layers", w),
+                       "with lattice: hexagonal walls are cut from the lattice to the depth re; leave layers at 0");
+}
+
+}  // namespace slide::cases

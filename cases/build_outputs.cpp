@@ -1,0 +1,50 @@
+// Step: what a run writes besides the particles' state: wave gauges, the dam-break surge front, free-surface
+// profiles, and the output intervals.
+#include <algorithm>
+
+#include "cases/scene_build.hpp"
+
+namespace slide::cases {
+namespace {
+
+std::vector<GaugeSpec> read_gauges(const YAML::Node& list) {
+  std::vector<GaugeSpec> out;
+  for (std::size_t k = 0; k < list.size(); ++k)
+    out.push_back({list[k]["name"].as<std::string>(), list[k]["x"].as<double>()});
+  return out;
+}
+
+SurgeFrontSpec read_surge_front(const YAML::Node& sf) {
+  return {sf["enabled"].as<bool>(), sf["wall_face_x"].as<double>(), sf["floor_y"].as<double>(),
+          sf["column_width"].as<double>()};
+}
+
+// profiles: times in increasing order, x_max > x_min when there are times, spacing 0 = dp.
+ProfileSpec read_profiles(const YAML::Node& pn, double dp) {
+  ProfileSpec out;
+  if (!pn) return out;
+  for (const auto& t : pn["times"]) out.times.push_back(t.as<double>());
+  if (!std::is_sorted(out.times.begin(), out.times.end()))
+    throw SceneError("profiles.times", "must be in increasing order");
+  out.x_min = pn["x_min"].as<double>();
+  out.x_max = pn["x_max"].as<double>();
+  if (!out.times.empty() && !(out.x_max > out.x_min)) throw SceneError("profiles.x_max", "must exceed profiles.x_min");
+  out.spacing = pn["spacing"].as<double>() > 0 ? pn["spacing"].as<double>() : dp;
+  return out;
+}
+
+OutputSpec read_output(const YAML::Node& on) {
+  return {on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>()};
+}
+
+}  // namespace
+
+void read_outputs(SceneBuild& b) {
+  Scene& scene = *b.scene;
+  scene.gauges = read_gauges(b.r["gauges"]);
+  scene.surge_front = read_surge_front(b.r["diagnostics"]["surge_front"]);
+  scene.profiles = read_profiles(b.r["profiles"], b.dp);
+  scene.output = read_output(b.r["output"]);
+}
+
+}  // namespace slide::cases

@@ -1,0 +1,79 @@
+// Step: the walls (walls[]): their faces, and their wall and dummy particles (square lattice: layers behind the
+// face polyline; hexagonal: the lattice points behind the face, to the depth re), each owned by its wall for
+// messages. On the hexagonal lattice with bodies, the lattice is first moved to meet the first body's bottom.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "cases/scene_build.hpp"
+#include "cases/wall_side.hpp"
+#include "fluid/walls.hpp"
+
+namespace slide::cases {
+namespace {
+
+// With bodies on the hexagonal lattice, the lattice is moved up or down (by less than half a row spacing) so that
+// a row lies dp/2 below the lowest point of the first body, where the fluid fill puts its nearest water. Why: the
+// lattice's rows are 0.93 dp apart and fixed, so water under a body would otherwise start up to a row spacing
+// further off than dp/2; the water cannot close such a gap under a held body (at rest, particles on a lattice
+// resist shear like a solid), and on release a block of water density sank 6.5 mm onto it (issue 4's note).
+Vec<2> lattice_offset_for_bodies(const SceneBuild& b) {
+  Vec<2> offset = Vec<2>::Zero();
+  if (!b.hexagonal || b.r["bodies"].size() == 0) return offset;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const auto& v : body_outline(b.r["bodies"][0], "bodies[0]")) lowest = std::min(lowest, v[1]);
+  offset[1] = row_offset_to_meet(b.sim->options.lattice, b.dp, lowest - 0.5 * b.dp);
+  return offset;
+}
+
+// The boundary points of one wall's face.
+std::vector<BoundaryPoint> wall_points(const SceneBuild& b, const YAML::Node& wn, std::size_t w,
+                                       const std::vector<Vec<2>>& face, bool left) {
+  const FluidOptions<2>& opt = b.sim->options;
+  const long layers_key = wn["layers"].as<long>();
+  const int layers = layers_key == 0 ? boundary_layers(opt.re_over_dp) : static_cast<int>(layers_key);
+  try {
+    return b.hexagonal ? lattice_boundary(face, left, b.dp, opt.re_over_dp * b.dp, opt.lattice,
+                                          b.scene->lattice_offset)
+                       : polyline_boundary(face, left, b.dp, layers);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(fmt::format("walls[{}].points", w), e.what());
+  }
+}
+
+// Boundary particles of the first phase's density; they carry no viscosity of their own. A point within dp/2 of a
+// particle already placed is left out (overlapping layers at convex corners or where walls meet).
+void add_wall_particles(SceneBuild& b, const std::vector<BoundaryPoint>& pts, std::size_t w) {
+  Particles<2>& P = b.particles();
+  const double dp = b.dp;
+  const auto& first_phase = b.phases.phases[0];
+  for (const auto& bp : pts) {
+    bool duplicate = false;
+    for (std::size_t i = 0; i < P.size() && !duplicate; ++i)
+      duplicate = distance_squared<2>(P.position[i], bp.position) < 0.25 * dp * dp;
+    if (duplicate) continue;
+    const std::size_t i =
+        P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density, first_phase.viscosity);
+    P.wall_normal[i] = bp.normal;
+    P.wall_depth[i] = bp.depth;
+    b.boundary_owner.push_back(fmt::format("walls[{}]", w));
+  }
+}
+
+}  // namespace
+
+void build_walls(SceneBuild& b) {
+  b.scene->lattice_offset = lattice_offset_for_bodies(b);
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
+    const auto wn = b.r["walls"][w];
+    const auto face = points_of(wn["points"]);
+    const bool left = fluid_side_names.parse(wn["fluid_side"].as<std::string>()) == FluidSide::left;
+    const std::vector<BoundaryPoint> pts = wall_points(b, wn, w, face, left);
+    for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
+    add_wall_particles(b, pts, w);
+  }
+}
+
+}  // namespace slide::cases

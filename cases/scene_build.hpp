@@ -1,0 +1,84 @@
+#pragma once
+// Private to cases/: what the steps of build_scene (cases/scene.cpp) share while a scene is built. Each step reads
+// the resolved scene and adds to the simulation; what a later step needs from an earlier one is kept here.
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cases/initial_state.hpp"
+#include "cases/scene.hpp"
+#include "cases/scene_geometry.hpp"
+#include "coupling/rigid_bodies.hpp"
+
+namespace slide::cases {
+
+// The fluid phases, by name and index (fluid.phases).
+struct ScenePhases {
+  struct Properties {
+    std::string name;
+    double density = 0.0;    // kg/m^3
+    double viscosity = 0.0;  // Pa s
+  };
+  std::map<std::string, std::size_t> index;  // name -> index into `phases` (Particles::phase)
+  std::vector<Properties> phases;
+
+  // The phase a region names; the empty name is the first phase. Throws SceneError at `key` for an unknown name.
+  std::size_t find(const std::string& name, const std::string& key) const;
+};
+
+struct SceneBuild {
+  SceneBuild(const YAML::Node& resolved, const std::filesystem::path& scene_dir);
+
+  const YAML::Node r;  // the resolved scene
+  std::filesystem::path scene_dir;  // where files named by the scene are looked up
+  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
+  std::unique_ptr<Simulation<2>> sim = std::make_unique<Simulation<2>>();
+
+  // Set by read_fluid_options.
+  double dp = 0.0;
+  bool hexagonal = false;
+  InitialState initial_state = InitialState::hydrostatic;
+  // Set by read_phases.
+  ScenePhases phases;
+  // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.
+  std::vector<FaceSegment> faces;
+  std::vector<std::string> boundary_owner;
+  // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0).
+  std::shared_ptr<RigidBodies> bodies;
+  std::vector<std::vector<rigid::Vec2>> outlines;
+  std::size_t boundary_count = 0;  // particles before the first fluid particle
+  // Set by fill_fluid_regions.
+  double still_level = -std::numeric_limits<double>::infinity();  // highest below_level level
+  std::vector<std::size_t> region_of_particle;  // fluid particle i - boundary_count came from this region
+  Vec<2> lo = Vec<2>::Zero(), hi = Vec<2>::Zero();  // bounding box of every particle as placed on the lattice
+
+  FluidOptions<2>& options() { return sim->options; }
+  Particles<2>& particles() { return sim->particles; }
+};
+
+// The steps, in the order build_scene runs them. Each throws SceneError naming the key at fault.
+void read_fluid_options(SceneBuild& b);        // build_options.cpp
+void check_lattice_choices(SceneBuild& b);     // build_options.cpp
+ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
+void build_walls(SceneBuild& b);               // build_walls.cpp
+void build_slides_and_bodies(SceneBuild& b);   // build_bodies.cpp
+void fill_fluid_regions(SceneBuild& b);        // build_fluid_regions.cpp
+void check_overlaps(SceneBuild& b);            // build_fluid_regions.cpp
+void choose_sound_speed(SceneBuild& b);        // build_initial_state.cpp
+void start_hydrostatic(SceneBuild& b);         // build_initial_state.cpp
+void set_domain(SceneBuild& b);                // build_initial_state.cpp
+void count_particles(SceneBuild& b);           // build_initial_state.cpp
+void read_outputs(SceneBuild& b);              // build_outputs.cpp
+void finish_bodies(SceneBuild& b);             // build_bodies.cpp
+void settle(SceneBuild& b);                    // build_initial_state.cpp
+
+// A body's outline from its shape, counter-clockwise in world coordinates at t = 0; it must be convex
+// (build_bodies.cpp; the walls need the first body's to move the hexagonal lattice).
+std::vector<rigid::Vec2> body_outline(const YAML::Node& body, const std::string& path);
+
+}  // namespace slide::cases

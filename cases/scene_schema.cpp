@@ -1,0 +1,270 @@
+// The scene format: every key with its documentation, unit, default and range. Its document() is cases/SCHEMA.md
+// (`slide schema`).
+#include <limits>
+
+#include "cases/body_choices.hpp"
+#include "cases/body_model.hpp"
+#include "cases/initial_state.hpp"
+#include "cases/scene.hpp"
+#include "cases/wall_side.hpp"
+#include "coupling/rigid_bodies.hpp"
+#include "fluid/fluid_options.hpp"
+
+namespace slide::cases {
+namespace {
+
+using S = Schema;
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+Schema point_list(std::string doc, std::size_t min_points) {
+  return S::list(std::move(doc), S::vector("a point [x, y]", "m", 2, std::nullopt), min_points);
+}
+
+Schema phase_schema() {
+  return S::map("one phase of fluid particles",
+                {{"name", S::text("name that regions refer to", std::nullopt)},
+                 {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, inf, true)},
+                 {"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf)}});
+}
+
+Schema region_schema() {
+  return S::variant(
+      "a region filled with fluid particles on the lattice (square: x = (i + 1/2) dp, y = (j + 1/2) dp; hexagonal: "
+      "fluid/lattice.hpp)",
+      "type",
+      {{"rectangle", S::map("the particles whose cell lies inside [min, max]",
+                            {{"phase", S::text("phase name (default: the first phase)", "")},
+                             {"min", S::vector("lower-left corner", "m", 2, std::nullopt)},
+                             {"max", S::vector("upper-right corner", "m", 2, std::nullopt)}})},
+       {"polygon", S::map("the particles whose centre lies inside a closed polygon",
+                          {{"phase", S::text("phase name (default: the first phase)", "")},
+                           {"points", point_list("polygon vertices (closed automatically)", 3)}})},
+       {"below_level", S::map("water below a level inside the walls: every lattice point below the level, "
+                              "inside the walls' bounding box, on the fluid side of the nearest wall face and at "
+                              "least dp/2 from it (hexagonal lattice: any distance in front of it; the points on or "
+                              "behind it are the walls')",
+                              {{"phase", S::text("phase name (default: the first phase)", "")},
+                               {"level", S::number("still-water level", "m", std::nullopt)}})}});
+}
+
+Schema wall_schema() {
+  return S::map(
+      "a wall given by its face (the surface the fluid touches); wall and dummy particle layers are placed "
+      "behind it at (k + 1/2) dp",
+      {{"name", S::text("name used in messages", "")},
+       {"points", point_list("vertices of the face polyline", 2)},
+       {"fluid_side", S::choice("side of the polyline (walking from the first vertex) where the fluid is",
+                                fluid_side_names.names(), std::string(to_string(FluidSide::left)))},
+       {"layers",
+        S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel", 0L, 0L, 10L)}});
+}
+
+Schema body_schema() {
+  return S::map(
+      "a slide or floating body; model rigid makes it a Bullet rigid body whose boundary particles (wall layer + "
+      "dummies inside its outline) exchange forces with the fluid",
+      {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
+       {"model",
+        S::choice("what the body is made of", body_model_names.names(), std::string(to_string(BodyModel::rigid)))},
+       {"shape",
+        S::variant(
+            "outline of the body (convex)", "type",
+            {{"box",
+              S::map("a rectangle", {{"center", S::vector("centre", "m", 2, std::nullopt)},
+                                     {"size", S::vector("width and height", "m", 2, std::nullopt, 0.0)},
+                                     {"angle", S::number("rotation, counter-clockwise", "deg", 0.0, -360.0, 360.0)}})},
+             {"polygon", S::map("a convex polygon", {{"points", point_list("vertices (closed automatically)", 3)}})}})},
+       {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, inf)},
+       {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, inf)},
+       {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
+       {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
+       {"motion",
+        S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
+                  "the law in `prescribed`",
+                  BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
+       {"locked", S::list("components held fixed (free motion)",
+                          S::choice("component", locked_component_names.names(), std::nullopt))},
+       {"release_time",
+        S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
+       {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
+                                     "put while the water settles; free lets a free body float with the water under "
+                                     "the same damping, so that t = 0 finds it at rest where the water holds it (a "
+                                     "floating body's equilibrium)",
+                                     during_settling_names.names(), std::string(to_string(DuringSettling::held)))},
+       {"prescribed",
+        S::map(
+            "prescribed motion (motion: prescribed)",
+            {{"type",
+              S::choice("series: a CSV time series (time,x,y,angle[,vx,vy,omega] of the centre of mass, as in "
+                        "bodies.csv) interpolated by cubic Hermite; ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) "
+                        "along `direction`",
+                        prescribed_law_names.names(), std::string(to_string(PrescribedLaw::series)))},
+             {"file", S::text("series: CSV file, relative to the scene file", "")},
+             {"body", S::text("series: rows whose body column equals this (default: this body's name)", "")},
+             {"direction", S::vector("ln_cosh: direction of travel", "", 2, std::vector<double>{1.0, -1.0})},
+             {"s0", S::number("ln_cosh: length scale s0 = u_t^2 / a0", "m", 1.0, 0.0, inf, true)},
+             {"t0", S::number("ln_cosh: time scale t0 = u_t / a0", "s", 1.0, 0.0, inf, true)},
+             {"start_time", S::number("ln_cosh: time the motion starts", "s", 0.0, 0.0, inf)}},
+            false)}});
+}
+
+Schema rigid_schema() {
+  return S::map(
+      "rigid-body settings (rigid/: Bullet in double precision)",
+      {{"collision_margin", S::number("Bullet collision margin, kept inside each outline", "dp", 0.1, 0.0, 1.0, true)},
+       {"wall_contact",
+        S::boolean("bodies collide with the walls (the walls have friction 1, so a body's friction is the "
+                   "Coulomb coefficient of the pair)",
+                   true)}},
+      false);
+}
+
+Schema method_schema() {
+  return S::map(
+      "numerical method (weakly compressible MPS, seed eqs. 1-7)",
+      {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
+       {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", gradient_model_names.names(),
+                              std::string(to_string(GradientModel::symmetric)))},
+       {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
+       {"sound_speed",
+        S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0, 0.0, inf)},
+       {"free_surface_beta",
+        S::number("free-surface threshold: n < beta n0 gets zero pressure", "", 0.97, 0.0, 1.0, true, false)},
+       {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
+       {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
+                               "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
+                               wall_slip_names.names(), std::string(to_string(WallSlip::no_slip)))},
+       {"wall_pressure", S::choice("pressure of boundary particles: mirror takes the fluid's pressure at the "
+                                   "particle's mirror image plus the hydrostatic head; number_density gives "
+                                   "wall-layer particles the pressure of their own number density (dummies none); "
+                                   "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
+                                   "et al. 2012) (fluid/wall_pressure.hpp)",
+                                   wall_pressure_names.names(), std::string(to_string(WallPressure::mirror)))},
+       {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
+                                          "(fluid/artificial_viscosity.hpp)",
+                                          "", 0.0, 0.0, 1.0)},
+       {"collision_distance", S::number("collision model (fluid/collision.hpp): fluid particles closer than this "
+                                        "approaching each other or a wall collide inelastically; 0 = off",
+                                        "dp", 0.5, 0.0, 1.0)},
+       {"collision_restitution", S::number("restitution coefficient of the collision model", "", 0.2, 0.0, 1.0)},
+       {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; settled "
+                                   "does that and then lets water at rest settle with damping for settling_time "
+                                   "(coupling/relaxation.hpp), for scenes whose water starts at rest; lattice starts "
+                                   "from the uncompressed lattice",
+                                   initial_state_names.names(), std::string(to_string(InitialState::hydrostatic)))},
+       {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
+       {"settling_damping",
+        S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, inf, true)},
+       {"neighbor_skin",
+        S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it", "dp", 0.3, 0.0, 1.0)}},
+      false);
+}
+
+Schema time_step_schema() {
+  return S::map(
+      "adaptive time step: dt = min(cfl dp / (c0 + |u|max), viscous_number dp^2 / nu_max, "
+      "force_number sqrt(dp / |a|max), max)",
+      {{"cfl", S::number("acoustic Courant number", "", 0.2, 0.0, 1.0, true, false)},
+       {"viscous_number", S::number("viscous diffusion number", "", 0.1, 0.0, 0.5, true, false)},
+       {"force_number", S::number("force (acceleration) number", "", 0.25, 0.0, 1.0, true, false)},
+       {"max", S::number("largest time step", "s", 1.0e-3, 0.0, inf, true, false)}},
+      false);
+}
+
+Schema checks_schema() {
+  return S::map("stability checks after every step; a failed check stops the run with exit 3",
+                {{"max_number_density_ratio",
+                  S::number("n / n0 above this is a number-density collapse", "", 1.5, 1.0, inf, true, false)},
+                 {"max_speed_over_c0",
+                  S::number("a fluid speed above this many c0 is a blow-up", "", 1.0, 0.0, inf, true, false)}},
+                false);
+}
+
+Schema output_schema() {
+  return S::map(
+      "what is written to the output folder",
+      {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
+       {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, inf)},
+       {"gauge_interval", S::number("time between gauge and diagnostic samples", "s", 0.005, 0.0, inf, true, false)},
+       {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)}},
+      false);
+}
+
+Schema gauge_schema() {
+  return S::map("a wave gauge: free-surface elevation by a vertical scan of the fluid number density",
+                {{"name", S::text("column name in gauges.csv", std::nullopt)},
+                 {"x", S::number("gauge position", "m", std::nullopt)}});
+}
+
+Schema profiles_schema() {
+  return S::map(
+      "free-surface profiles (profiles.csv: time,x,eta), each taken at the first step at or after "
+      "its time, by the gauges' vertical scan",
+      {{"times", S::vector("times of the profiles", "s", -1, std::vector<double>{}, 0.0)},
+       {"x_min", S::number("first x", "m", 0.0)},
+       {"x_max", S::number("last x", "m", 0.0)},
+       {"spacing", S::number("distance between points; 0 = dp", "m", 0.0, 0.0, inf)}},
+      false);
+}
+
+Schema surge_schema() {
+  return S::map(
+      "dam-break diagnostics (surge_front.csv): front of the largest connected body of water (particles closer "
+      "than 2 dp linked) measured from the wall face, and the water height at that wall",
+      {{"enabled", S::boolean("write surge_front.csv", false)},
+       {"wall_face_x", S::number("x of the wall face the column stands against", "m", 0.0)},
+       {"floor_y", S::number("y of the floor face", "m", 0.0)},
+       {"column_width",
+        S::number("initial column width a for Z = front / a and T = t sqrt(2 g / a); 0 = omit", "m", 0.0, 0.0, inf)}},
+      false);
+}
+
+Schema domain_schema() {
+  return S::map(
+      "box outside which a fluid particle is an instability; default: the particles' bounding "
+      "box enlarged by 4 re on every side and by half its height upwards",
+      {{"min", S::vector("lower corner", "m", 2, std::nullopt)},
+       {"max", S::vector("upper corner", "m", 2, std::nullopt)}},
+      false);
+}
+
+Schema make_schema() {
+  return S::map(
+      "a slide scene",
+      {{"name", S::text("case name; default: the file name without extension", "")},
+       {"description", S::text("free text", "")},
+       {"dimension",
+        S::integer("spatial dimension (scenes are 2-D for now; the solver is built for 2 and 3)", 2L, 2L, 2L)},
+       {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, inf, true, false)},
+       {"lattice", S::choice("lattice the particles start on, one particle per dp^2 either way: square, or "
+                             "hexagonal (nearest spacing 1.0746 dp), the stable packing that still water needs to "
+                             "stay at rest; with hexagonal, walls are cut from the same lattice (layers unused), "
+                             "the wall pressure must be extrapolated or number_density, the initial state lattice or "
+                             "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
+                             "lies dp/2 below the lowest point of the first body",
+                             lattice_kind_names.names(), std::string(to_string(LatticeKind::square)))},
+       {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
+       {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
+       {"domain", domain_schema()},
+       {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
+                                      {"regions", S::list("regions filled with fluid", region_schema(), 1)}})},
+       {"walls", S::list("walls", wall_schema())},
+       {"bodies", S::list("rigid bodies (slides, floating blocks)", body_schema())},
+       {"rigid", rigid_schema()},
+       {"method", method_schema()},
+       {"time_step", time_step_schema()},
+       {"checks", checks_schema()},
+       {"output", output_schema()},
+       {"gauges", S::list("wave gauges", gauge_schema())},
+       {"profiles", profiles_schema()},
+       {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge_schema()}}, false)}});
+}
+
+}  // namespace
+
+const Schema& scene_schema() {
+  static const Schema schema = make_schema();
+  return schema;
+}
+
+}  // namespace slide::cases
