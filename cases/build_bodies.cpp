@@ -257,6 +257,73 @@ void add_lattice_sums(BodyReport& rep, const std::vector<rigid::Vec2>& v, double
   }
 }
 
+// A deformable slide: its phase and outline; its particles are placed with the water (fill_fluid_regions). Keys of
+// the rigid model (mass, friction, motion, ...) are left as they are: switching back uses them again.
+void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string& path,
+                          const std::vector<rigid::Vec2>& outline, RheologyModel model) {
+  const double density = bn["density"].as<double>();
+  if (!(density > 0.0))
+    throw SceneError(path + ".density", "a deformable slide needs its density (mass is for rigid bodies)");
+  const std::string name = bn["name"].as<std::string>();
+  const Rheology rheology = read_rheology(model, bn["rheology"]);
+  const std::size_t phase = b.phases.add(name, density, rheology, path + ".name");
+  b.slides.push_back({path, outline, phase});
+  SlideReport rep;
+  rep.name = name;
+  rep.model = std::string(rheology_model_names.name(model));
+  rep.phase = static_cast<std::uint8_t>(phase);
+  rep.area = rigid::signed_area(outline);
+  rep.density = density;
+  const Vec<2> d = vec2(bn["front_direction"]);
+  if (d.norm() == 0.0) throw SceneError(path + ".front_direction", "must not be zero");
+  rep.front_direction = d.normalized();
+  b.scene->slides.push_back(rep);
+}
+
+// The yield criterion at rest, an infinite-slope estimate: the slide rests on the wall face its outline lies along
+// (the steepest such face); a layer of its largest thickness normal to that face, of buoyant density (rho_s - rho_w
+// below the still-water level), has the basal shear stress tau = rho' g h sin(theta); it holds tau_y
+// (Herschel-Bulkley), c + rho' g h cos(theta) tan(phi) (Mohr-Coulomb), mu_s rho' g h cos(theta) (mu(I)), nothing
+// (Newtonian).
+void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, SlideReport& rep) {
+  const Particles<2>& P = b.sim->particles;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
+  rep.mass_particles = rep.particles * rep.density * b.dp * b.dp;
+  const double g = b.sim->options.gravity.norm();
+  Vec<2> tangent = Vec<2>::Zero(), normal = Vec<2>::Zero();
+  double steepest = -1.0;
+  for (const auto& f : b.faces) {
+    int touching = 0;
+    for (const auto& v : slide.outline) touching += signed_face_distance({f}, from_rigid(v)) < 0.5 * b.dp;
+    if (touching < 2) continue;
+    const Vec<2> t = (f.b - f.a).normalized();
+    const double steep = std::abs(t[1]);
+    if (steep > steepest) steepest = steep, tangent = t, normal = f.inward;
+  }
+  const Rheology rheology = b.phases.phases[slide.phase].rheology;
+  if (steepest < 0.0 || g == 0.0) {
+    rep.criterion = "rests on no wall face: no yield criterion at rest";
+    return;
+  }
+  rep.slope_angle_deg = std::asin(std::min(1.0, steepest)) * 180.0 / M_PI;
+  double h = 0.0;
+  const Vec<2> base = from_rigid(slide.outline[0]);
+  for (const auto& v : slide.outline) h = std::max(h, std::abs((from_rigid(v) - base).dot(normal)));
+  const double below = std::isfinite(b.still_level) && rigid::centroid(slide.outline)[1] < b.still_level ? 1.0 : 0.0;
+  const double buoyant = rep.density - below * b.phases.phases[0].density;
+  const double theta = rep.slope_angle_deg * M_PI / 180.0;
+  rep.basal_shear_stress = buoyant * g * h * std::sin(theta);
+  const double normal_stress = buoyant * g * h * std::cos(theta);
+  if (const auto* hb = std::get_if<HerschelBulkley>(&rheology)) rep.strength = hb->yield_stress_pa;
+  else if (const auto* mc = std::get_if<MohrCoulomb>(&rheology)) rep.strength = mc->yield_stress(normal_stress);
+  else if (const auto* mi = std::get_if<GranularMuI>(&rheology)) rep.strength = mi->mu_s * normal_stress;
+  rep.criterion = fmt::format("on a {:.3g} degree face, thickness {:.3g} m, buoyant density {:.4g} kg/m^3: basal shear "
+                              "stress {:.4g} Pa against {:.4g} Pa it holds: {}",
+                              rep.slope_angle_deg, h, buoyant, rep.basal_shear_stress, rep.strength,
+                              rep.basal_shear_stress <= rep.strength ? "stands at rest (rigid throughout)" : "flows");
+}
+
 }  // namespace
 
 std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& path) {
@@ -278,8 +345,9 @@ std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& p
   return outline;
 }
 
-// The decision point for what a body is made of: today every body is rigid (model: rigid); a slide of sediment
-// particles filling the same outline will be the other case here.
+// The decision point for what a body is made of: model rigid makes a Bullet body with boundary particles; any other
+// model makes a deformable slide, a phase of its own (named after the body, of its density and rheology) whose
+// particles fill the same outline (fill_fluid_regions). Everything else in the scene stays as it is.
 void build_slides_and_bodies(SceneBuild& b) {
   const YAML::Node list = b.r["bodies"];
   if (list.size() == 0) return;
@@ -293,16 +361,18 @@ void build_slides_and_bodies(SceneBuild& b) {
     names[name] = k;
     const std::vector<rigid::Vec2> outline = body_outline(bn, path);
     check_in_front_of_walls(b, outline, path);
-    switch (body_model_names.parse(bn["model"].as<std::string>())) {
-      case BodyModel::rigid:
-        add_rigid_body(b, bn, path, outline);
-        break;
+    const BodyModel model = body_model_names.parse(bn["model"].as<std::string>());
+    if (const auto rheology = sediment_rheology(model)) {
+      add_deformable_slide(b, bn, path, outline, *rheology);
+      continue;
     }
+    add_rigid_body(b, bn, path, outline);
     b.outlines.push_back(outline);
   }
 }
 
 void finish_bodies(SceneBuild& b) {
+  for (std::size_t k = 0; k < b.slides.size(); ++k) finish_slide_report(b, b.slides[k], b.scene->slides[k]);
   for (std::size_t k = 0; k < b.scene->bodies.size(); ++k)
     add_lattice_sums(b.scene->bodies[k], b.outlines[k], b.dp, b.still_level, b.phases.phases[0].density);
   if (b.outlines.empty()) return;

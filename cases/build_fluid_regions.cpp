@@ -18,6 +18,14 @@ struct RegionShape {
   std::function<bool(const Vec<2>&)> inside;
 };
 
+// The deformable slide whose outline holds p; -1 when none does. (Slide and water particles sit on the same lattice,
+// so the outline alone divides them, with no gap.)
+int slide_holding(const SceneBuild& b, const Vec<2>& p) {
+  for (std::size_t k = 0; k < b.slides.size(); ++k)
+    if (rigid::contains(b.slides[k].outline, rigid::Vec2(p[0], p[1]))) return static_cast<int>(k);
+  return -1;
+}
+
 // The body whose outline holds p or lies within dp/2 of it; -1 when p is clear of every body.
 int body_near(const SceneBuild& b, const Vec<2>& p) {
   for (std::size_t k = 0; k < b.outlines.size(); ++k) {
@@ -61,7 +69,20 @@ RegionShape below_level(SceneBuild& b, const YAML::Node& rn, const std::string& 
   const double clearance = b.hexagonal ? 1e-9 * b.dp : 0.5 * b.dp - 1e-9 * b.dp;
   b.still_level = std::max(b.still_level, level);
   return {face_lo, Vec<2>(face_hi[0], std::min(level, face_hi[1])), [&b, level, clearance](const Vec<2>& p) {
-            return p[1] < level && signed_face_distance(b.faces, p) >= clearance && body_near(b, p) < 0;
+            return p[1] < level && signed_face_distance(b.faces, p) >= clearance && body_near(b, p) < 0 &&
+                   slide_holding(b, p) < 0;
+          }};
+}
+
+// A deformable slide: the lattice points inside its outline and in front of the walls (as water is placed).
+RegionShape slide_shape(const SceneBuild& b, const SceneBuild::Slide& slide) {
+  Vec<2> lo = from_rigid(slide.outline[0]), hi = lo;
+  for (const auto& v : slide.outline) lo = lo.cwiseMin(from_rigid(v)), hi = hi.cwiseMax(from_rigid(v));
+  const double clearance = b.hexagonal ? 1e-9 * b.dp : 0.5 * b.dp - 1e-9 * b.dp;
+  const auto outline = slide.outline;
+  return {lo, hi, [&b, outline, clearance](const Vec<2>& p) {
+            return rigid::contains(outline, rigid::Vec2(p[0], p[1])) &&
+                   (b.faces.empty() || signed_face_distance(b.faces, p) >= clearance);
           }};
 }
 
@@ -73,7 +94,7 @@ RegionShape region_shape(SceneBuild& b, const YAML::Node& rn, const std::string&
 }
 
 // Fills region k with fluid particles of phase `ph`; a lattice point on or near a body is an error.
-void fill_region(SceneBuild& b, std::size_t k, const RegionShape& shape, std::size_t ph, const std::string& path) {
+void fill_region(SceneBuild& b, const RegionShape& shape, std::size_t ph, const std::string& path, bool slide_itself) {
   Particles<2>& P = b.particles();
   const auto& phase = b.phases.phases[ph];
   std::size_t added = 0;
@@ -83,8 +104,11 @@ void fill_region(SceneBuild& b, std::size_t k, const RegionShape& shape, std::si
         throw SceneError(path, fmt::format("water at ({:.6g}, {:.6g}) lies inside body bodies[{}] or within dp/2 of "
                                            "its outline",
                                            p[0], p[1], body));
+      if (const int slide = slide_itself ? -1 : slide_holding(b, p); slide >= 0)
+        throw SceneError(path, fmt::format("water at ({:.6g}, {:.6g}) lies inside the deformable slide {}", p[0], p[1],
+                                           b.slides[slide].path));
       P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
-      b.region_of_particle.push_back(k);
+      b.fluid_owner.push_back(path);
       ++added;
     }, b.scene->lattice_offset);
   if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", b.dp));
@@ -94,11 +118,12 @@ void fill_region(SceneBuild& b, std::size_t k, const RegionShape& shape, std::si
 
 void fill_fluid_regions(SceneBuild& b) {
   b.boundary_count = b.particles().size();
+  for (const auto& slide : b.slides) fill_region(b, slide_shape(b, slide), slide.phase, slide.path, true);
   for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
     const auto rn = b.r["fluid"]["regions"][k];
     const std::string path = fmt::format("fluid.regions[{}]", k);
     const std::size_t ph = b.phases.find(rn["phase"].as<std::string>(), path + ".phase");
-    fill_region(b, k, region_shape(b, rn, path), ph, path);
+    fill_region(b, region_shape(b, rn, path), ph, path, false);
   }
   // The bounding box of the particles as placed (before the hydrostatic start moves them).
   const Particles<2>& P = b.particles();
@@ -114,7 +139,7 @@ void check_overlaps(SceneBuild& b) {
   NeighborGrid<2> g(b.lo - Vec<2>::Constant(dp), b.hi + Vec<2>::Constant(dp), dp);
   g.bin(P.position);
   for (std::size_t i = n_boundary; i < P.size(); ++i) {
-    const std::string path = fmt::format("fluid.regions[{}]", b.region_of_particle[i - n_boundary]);
+    const std::string& path = b.fluid_owner[i - n_boundary];
     g.for_each_near(P.position[i], 0.75 * dp, P.position, [&](std::uint32_t j, double r2) {
       if (j == i) return;
       if (j < n_boundary)
@@ -123,9 +148,8 @@ void check_overlaps(SceneBuild& b) {
                                            b.boundary_owner[j], P.position[i][0], P.position[i][1],
                                            std::sqrt(r2) / dp));
       if (j < i)
-        throw SceneError(path, fmt::format("overlaps fluid.regions[{}] at ({:.6g}, {:.6g})",
-                                           b.region_of_particle[j - n_boundary], P.position[i][0],
-                                           P.position[i][1]));
+        throw SceneError(path, fmt::format("overlaps {} at ({:.6g}, {:.6g})", b.fluid_owner[j - n_boundary],
+                                           P.position[i][0], P.position[i][1]));
     });
   }
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cases/scene_build.hpp"
+#include "fluid/periodic.hpp"
 #include "coupling/equilibrium_column.hpp"
 #include "coupling/relaxation.hpp"
 #include "fluid/hydrostatic_start.hpp"
@@ -94,6 +95,7 @@ void set_domain(SceneBuild& b) {
       if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
         throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
                                                P.position[i][0], P.position[i][1]));
+  if (b.r["domain"]["periodic_x"].as<bool>()) opt.periodic_x = PeriodicX{opt.domain_lo[0], opt.domain_hi[0]};
 }
 
 void count_particles(SceneBuild& b) {
@@ -108,7 +110,10 @@ void settle(SceneBuild& b) {
   if (b.initial_state != InitialState::settled) return;
   const YAML::Node m = b.r["method"];
   try {
-    b.scene->settling = relax_at_rest(*b.sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>());
+    std::vector<std::uint8_t> slides;  // deformable slides are held while the water settles, like rigid ones
+    for (const auto& s : b.slides) slides.push_back(static_cast<std::uint8_t>(s.phase));
+    b.scene->settling =
+        relax_at_rest(*b.sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>(), slides);
   } catch (const std::runtime_error& e) {
     throw SceneError("method.initial_state", e.what());
   }

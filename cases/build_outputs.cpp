@@ -45,6 +45,9 @@ void read_outputs(SceneBuild& b) {
   scene.surge_front = read_surge_front(b.r["diagnostics"]["surge_front"]);
   scene.profiles = read_profiles(b.r["profiles"], b.dp);
   scene.output = read_output(b.r["output"]);
+  for (const auto& t : b.r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());
+  if (!std::is_sorted(scene.slide_outline_times.begin(), scene.slide_outline_times.end()))
+    throw SceneError("output.slide_outline_times", "must be in increasing order");
 }
 
 }  // namespace slide::cases

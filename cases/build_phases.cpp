@@ -1,7 +1,9 @@
-// Step: the fluid phases (fluid.phases), by name and index, with each one's density and viscosity.
+// Step: the fluid phases (fluid.phases, and the deformable slides'), by name and index, with each one's density and
+// rheology; the viscous scheme that follows from them.
 #include <fmt/format.h>
 
 #include "cases/scene_build.hpp"
+#include "cases/viscous_scheme_choice.hpp"
 
 namespace slide::cases {
 
@@ -12,17 +14,42 @@ std::size_t ScenePhases::find(const std::string& name, const std::string& key) c
   return it->second;
 }
 
+std::size_t ScenePhases::add(const std::string& name, double density, const Rheology& rheology, const std::string& key) {
+  if (index.count(name)) throw SceneError(key, "duplicate phase name \"" + name + "\" (phases and deformable slides share names)");
+  if (phases.size() >= 255) throw SceneError(key, "more than 255 phases");
+  index[name] = phases.size();
+  // A non-Newtonian phase's particles are made with its viscosity at rest; the rheology stage sets it from the first
+  // step on (coupling/simulation.cpp).
+  phases.push_back({name, density, effective_viscosity(rheology, 0.0, 0.0), rheology});
+  return phases.size() - 1;
+}
+
 ScenePhases read_phases(const YAML::Node& list) {
   ScenePhases out;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const auto ph = list[k];
-    const std::string name = ph["name"].as<std::string>();
-    if (out.index.count(name))
-      throw SceneError(fmt::format("fluid.phases[{}].name", k), "duplicate phase name \"" + name + "\"");
-    out.index[name] = k;
-    out.phases.push_back({name, ph["density"].as<double>(), ph["viscosity"].as<double>()});
+    out.add(ph["name"].as<std::string>(), ph["density"].as<double>(), read_rheology(ph["rheology"]),
+            fmt::format("fluid.phases[{}].name", k));
   }
   return out;
+}
+
+// The phases as the simulation keeps them, and the viscous scheme (auto: implicit when some phase is non-Newtonian).
+void set_phases(SceneBuild& b) {
+  bool non_newtonian = false;
+  for (const auto& p : b.phases.phases) {
+    b.sim->phases.push_back(Phase{p.name, p.density, p.rheology});
+    non_newtonian = non_newtonian || !std::holds_alternative<Newtonian>(p.rheology);
+  }
+  auto& o = b.options();
+  switch (viscous_scheme_choice_names.parse(b.r["method"]["viscous_scheme"].as<std::string>())) {
+    case ViscousSchemeChoice::automatic:
+      o.viscous_scheme = non_newtonian ? ViscousScheme::implicit : ViscousScheme::explicit_;
+      break;
+    case ViscousSchemeChoice::explicit_: o.viscous_scheme = ViscousScheme::explicit_; break;
+    case ViscousSchemeChoice::implicit: o.viscous_scheme = ViscousScheme::implicit; break;
+  }
+  o.implicit_tolerance = b.r["method"]["implicit_tolerance"].as<double>();
 }
 
 }  // namespace slide::cases

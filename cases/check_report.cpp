@@ -81,6 +81,23 @@ double memory_estimate_mb(const Simulation<2>& sim) {
   return (2.0 * n * per_particle + n * sizeof(Vec<2>) * 2 + list) / 1.0e6;
 }
 
-std::string check_report(const Scene& scene) { return summary(scene) + start(scene) + bodies(scene); }
+// The phases with their rheology and the viscous scheme; each deformable slide with its particles, mass and yield
+// criterion at rest.
+std::string phases_and_slides(const Scene& scene) {
+  const auto& sim = *scene.simulation;
+  std::string out;
+  for (const auto& p : sim.phases)
+    out += fmt::format("phase {:<9} {} kg/m^3, {}\n", p.name, p.density_kg_m3, model_name(p.rheology));
+  out += fmt::format("viscous scheme  {}\n", to_string(sim.options.viscous_scheme));
+  for (const auto& s : scene.slides)
+    out += fmt::format("slide {:<9} deformable ({}), {} particles, area {:.6g} m^2, mass {:.6g} kg/m (particles {:.6g})\n"
+                       "  at rest         {}\n",
+                       s.name, s.model, s.particles, s.area, s.density * s.area, s.mass_particles, s.criterion);
+  return out;
+}
+
+std::string check_report(const Scene& scene) {
+  return summary(scene) + phases_and_slides(scene) + start(scene) + bodies(scene);
+}
 
 }  // namespace slide::cases

@@ -2,6 +2,8 @@
 // file under cases/, sharing a SceneBuild: cases/scene_build.hpp).
 #include "cases/scene.hpp"
 
+#include <stdexcept>
+
 #include "cases/scene_build.hpp"
 
 namespace slide::cases {
@@ -42,7 +44,12 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   count_particles(b);
   read_outputs(b);
   finish_bodies(b);
-  b.sim->initialise();
+  set_phases(b);
+  try {
+    b.sim->initialise();
+  } catch (const std::invalid_argument& e) {  // what the solver refuses: a periodic domain's set-up
+    throw SceneError("domain.periodic_x", e.what());
+  }
   settle(b);
 
   b.scene->simulation = std::move(b.sim);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <cstdint>
 
 #include <yaml-cpp/yaml.h>
 
@@ -56,6 +57,24 @@ struct BodyReport {
   bool free_while_settling = false;  // during_settling: free
 };
 
+// A deformable slide (bodies[k] with a model other than rigid): sediment particles of its own phase.
+struct SlideReport {
+  std::string name;
+  std::string model;             // herschel_bulkley, ...
+  std::uint8_t phase = 0;        // Particles::phase of its particles
+  std::size_t particles = 0;
+  double area = 0.0;             // m^2 per unit width, of the outline
+  double density = 0.0;          // kg/m^3
+  double mass_particles = 0.0;   // kg/m, particles x density x dp^2
+  Vec<2> front_direction = Vec<2>(1.0, 0.0);  // unit
+  // The yield criterion at rest (infinite-slope estimate on the face it rests on): the basal shear stress of the
+  // buoyant layer against what the material holds, and the verdict.
+  double slope_angle_deg = 0.0;
+  double basal_shear_stress = 0.0;  // Pa
+  double strength = 0.0;            // Pa: yield stress, or friction x normal stress
+  std::string criterion;            // one line for slide check
+};
+
 struct Scene {
   std::string name;
   YAML::Node resolved;  // every key, defaults filled in
@@ -71,6 +90,8 @@ struct Scene {
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
   std::vector<BodyReport> bodies;
+  std::vector<SlideReport> slides;
+  std::vector<double> slide_outline_times;  // s, increasing
   std::optional<Relaxation> settling;  // the settled start, when used
   double body_sample_interval = 0.0;  // s, bodies.csv rows
 };

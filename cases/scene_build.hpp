@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cases/initial_state.hpp"
+#include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
 #include "cases/scene_geometry.hpp"
 #include "coupling/rigid_bodies.hpp"
@@ -22,13 +23,16 @@ struct ScenePhases {
   struct Properties {
     std::string name;
     double density = 0.0;    // kg/m^3
-    double viscosity = 0.0;  // Pa s
+    double viscosity = 0.0;  // Pa s, the particles' viscosity as made (a non-Newtonian model's at rest)
+    Rheology rheology = Newtonian{1e-3};
   };
   std::map<std::string, std::size_t> index;  // name -> index into `phases` (Particles::phase)
   std::vector<Properties> phases;
 
   // The phase a region names; the empty name is the first phase. Throws SceneError at `key` for an unknown name.
   std::size_t find(const std::string& name, const std::string& key) const;
+  // Adds a phase (a deformable slide's); throws SceneError at `key` if the name is taken or there are too many.
+  std::size_t add(const std::string& name, double density, const Rheology& rheology, const std::string& key);
 };
 
 struct SceneBuild {
@@ -48,13 +52,20 @@ struct SceneBuild {
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.
   std::vector<FaceSegment> faces;
   std::vector<std::string> boundary_owner;
-  // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0).
+  // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0), and the
+  // deformable slides (filled with their phase's particles by fill_fluid_regions).
   std::shared_ptr<RigidBodies> bodies;
   std::vector<std::vector<rigid::Vec2>> outlines;
+  struct Slide {
+    std::string path;  // bodies[k]
+    std::vector<rigid::Vec2> outline;
+    std::size_t phase = 0;
+  };
+  std::vector<Slide> slides;
   std::size_t boundary_count = 0;  // particles before the first fluid particle
   // Set by fill_fluid_regions.
   double still_level = -std::numeric_limits<double>::infinity();  // highest below_level level
-  std::vector<std::size_t> region_of_particle;  // fluid particle i - boundary_count came from this region
+  std::vector<std::string> fluid_owner;  // the key (fluid.regions[k], bodies[k]) of fluid particle i - boundary_count
   Vec<2> lo = Vec<2>::Zero(), hi = Vec<2>::Zero();  // bounding box of every particle as placed on the lattice
 
   FluidOptions<2>& options() { return sim->options; }
@@ -75,6 +86,7 @@ void set_domain(SceneBuild& b);                // build_initial_state.cpp
 void count_particles(SceneBuild& b);           // build_initial_state.cpp
 void read_outputs(SceneBuild& b);              // build_outputs.cpp
 void finish_bodies(SceneBuild& b);             // build_bodies.cpp
+void set_phases(SceneBuild& b);                // build_phases.cpp
 void settle(SceneBuild& b);                    // build_initial_state.cpp
 
 // A body's outline from its shape, counter-clockwise in world coordinates at t = 0; it must be convex

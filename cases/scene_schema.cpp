@@ -5,7 +5,9 @@
 #include "cases/body_choices.hpp"
 #include "cases/body_model.hpp"
 #include "cases/initial_state.hpp"
+#include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
+#include "cases/viscous_scheme_choice.hpp"
 #include "cases/wall_side.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/fluid_options.hpp"
@@ -24,7 +26,7 @@ Schema phase_schema() {
   return S::map("one phase of fluid particles",
                 {{"name", S::text("name that regions refer to", std::nullopt)},
                  {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, inf, true)},
-                 {"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf)}});
+                 {"rheology", rheology_schema()}});
 }
 
 Schema region_schema() {
@@ -62,7 +64,9 @@ Schema wall_schema() {
 Schema body_schema() {
   return S::map(
       "a slide or floating body; model rigid makes it a Bullet rigid body whose boundary particles (wall layer + "
-      "dummies inside its outline) exchange forces with the fluid",
+      "dummies inside its outline) exchange forces with the fluid; any other model fills the same outline with "
+      "sediment particles of that rheology (a phase named after the body, of its density), so that one key switches a "
+      "slide between rigid and deformable",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"model",
         S::choice("what the body is made of", body_model_names.names(), std::string(to_string(BodyModel::rigid)))},
@@ -78,6 +82,9 @@ Schema body_schema() {
        {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, inf)},
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
+       {"rheology", rheology_parameters_schema()},
+       {"front_direction", S::vector("deformable slides: slide_front.csv's front is the particle furthest along this "
+                                     "direction", "", 2, std::vector<double>{1.0, 0.0})},
        {"motion",
         S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
                   "the law in `prescribed`",
@@ -156,7 +163,14 @@ Schema method_schema() {
        {"settling_damping",
         S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, inf, true)},
        {"neighbor_skin",
-        S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it", "dp", 0.3, 0.0, 1.0)}},
+        S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it", "dp", 0.3, 0.0, 1.0)},
+       {"viscous_scheme",
+        S::choice("integration of the viscous term: explicit (its own time-step limit), implicit (semi-implicit, "
+                  "viscosity lagged, one conjugate-gradient solve per step: fluid/implicit_viscosity.hpp), or auto: "
+                  "implicit when some phase or deformable slide is non-Newtonian, explicit otherwise",
+                  viscous_scheme_choice_names.names(), "auto")},
+       {"implicit_tolerance",
+        S::number("semi-implicit viscous solve: relative residual", "", 1.0e-8, 0.0, 1.0, true, true)}},
       false);
 }
 
@@ -185,7 +199,10 @@ Schema output_schema() {
       "what is written to the output folder",
       {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
        {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, inf)},
-       {"gauge_interval", S::number("time between gauge and diagnostic samples", "s", 0.005, 0.0, inf, true, false)},
+       {"gauge_interval", S::number("time between gauge and diagnostic samples (gauges.csv, surge_front.csv, "
+                                    "slide_front.csv)", "s", 0.005, 0.0, inf, true, false)},
+       {"slide_outline_times", S::vector("times of the deformable slides' upper surfaces in slide_outline.csv, each "
+                                         "taken at the first step at or after it", "s", -1, std::vector<double>{}, 0.0)},
        {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)}},
       false);
 }
@@ -224,7 +241,9 @@ Schema domain_schema() {
       "box outside which a fluid particle is an instability; default: the particles' bounding "
       "box enlarged by 4 re on every side and by half its height upwards",
       {{"min", S::vector("lower corner", "m", 2, std::nullopt)},
-       {"max", S::vector("upper corner", "m", 2, std::nullopt)}},
+       {"max", S::vector("upper corner", "m", 2, std::nullopt)},
+       {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x] (fluid/periodic.hpp): walls along "
+                                 "the channel must lie within it; no rigid bodies", false)}},
       false);
 }
 

@@ -13,10 +13,22 @@ namespace {
 
 // Settling's bookkeeping after each step: the largest fluid speed, and the same damping for floating bodies as the
 // fluid gets (Simulation::correct_with_pressure_gradient: u <- u exp(-rate dt)).
+// Held phases' particles go back to where they started (by id) and stop.
 class SettlingObserver : public StepObserver<2> {
  public:
-  SettlingObserver(Relaxation& out, RigidBodies* floating) : out_(out), floating_(floating) {}
+  SettlingObserver(Relaxation& out, RigidBodies* floating, const Particles<2>& P,
+                   const std::vector<std::uint8_t>& held_phases)
+      : out_(out), floating_(floating), held_(256, false), start_(P.real_count()) {
+    for (auto ph : held_phases) held_[ph] = true;
+    for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
+  }
   void after_step(Simulation<2>& sim, double dt) override {
+    auto& P = sim.particles;
+    for (std::size_t i = 0; i < P.real_count(); ++i)
+      if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
+        P.position[i] = start_[P.id[i]];
+        P.velocity[i] = Vec<2>::Zero();
+      }
     out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
     if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
   }
@@ -24,11 +36,14 @@ class SettlingObserver : public StepObserver<2> {
  private:
   Relaxation& out_;
   RigidBodies* floating_;
+  std::vector<bool> held_;
+  std::vector<Vec<2>> start_;  // by id
 };
 
 }  // namespace
 
-Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate) {
+Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
+                         const std::vector<std::uint8_t>& held_phases) {
   Relaxation out;
   out.duration = duration;
   out.damping_rate = damping_rate;
@@ -47,7 +62,7 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   }
   const double saved_rate = sim.options.velocity_damping_rate;
   sim.set_velocity_damping(damping_rate);
-  SettlingObserver observer(out, floating ? bodies.get() : nullptr);
+  SettlingObserver observer(out, floating ? bodies.get() : nullptr, P, held_phases);
   const AdvanceResult result = advance<2>(sim, duration, {&observer});
   if (result.instability)
     throw std::runtime_error("settling went unstable at t = " + std::to_string(result.instability->time) +

@@ -9,6 +9,9 @@
 // damping releases that energy before t = 0. The same is done in SPH practice ("settling runs"). On the hexagonal
 // lattice (fluid/lattice.hpp), a stable packing, settling only compresses the water under its weight.
 // Bodies are left out while settling: their boundary particles stay where they are, like walls.
+#include <cstdint>
+#include <vector>
+
 #include "coupling/simulation.hpp"
 
 namespace slide {
@@ -24,6 +27,9 @@ struct Relaxation {
 
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
 // settling goes unstable. On return the simulation is at time 0 with every fluid velocity zero.
-Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate);
+// held_phases: fluid particles of these phases (deformable slides) are held where they are while the water settles
+// around them, as a rigid slide is (their pressure still settles: they are put back after every step).
+Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
+                         const std::vector<std::uint8_t>& held_phases = {});
 
 }  // namespace slide

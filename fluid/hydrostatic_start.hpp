@@ -128,7 +128,11 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
           const double y = P.position[members[m]][up];
           const double depth_mid = surface - 0.5 * (y + below_nominal);
           const double rho = P.density[members[m]];
-          const double target = eos.number_density_ratio(rho * g * depth_mid, rho);
+          // Under layers of other densities (water over sediment) the pressure is their weight plus this phase's:
+          // rho g depth + g sum_{above} (rho_k - rho) dp, each particle above standing for dp of height.
+          double heavier_above = 0.0;
+          for (std::size_t k = m + 1; k < end; ++k) heavier_above += P.density[members[k]] - rho;
+          const double target = eos.number_density_ratio(rho * g * depth_mid + g * heavier_above * dp, rho);
           const std::size_t from_top = end - 1 - m + top_offset;
           const double gap = from_top < gap_from_top.size()
                                  ? gap_from_top[from_top] * (y - below_nominal) / dp

@@ -145,7 +145,7 @@ end_time: 1
 gravity: [0, 0]
 method: {sound_speed: 10, initial_state: lattice}
 fluid:
-  phases: [{name: water, viscosity: 0.01}]
+  phases: [{name: water, rheology: {viscosity: 0.01}}]
   regions:
     - {type: rectangle, min: [0, 0], max: [0.4, 0.1]}
     - {type: rectangle, min: [0, 0.2], max: [0.4, 0.3]}

@@ -174,6 +174,13 @@ int run_command(const RunArguments& args) {
     j["simulated_time"] = sim.time();
     j["steps"] = sim.step_count();
     j["neighbor_rebuilds"] = sim.neighbor_rebuilds();
+    const ViscousSolveStats& vs = sim.viscous_solves();
+    j["viscous_scheme"] = to_string(sim.options.viscous_scheme);
+    j["viscous_solves"] = {{"solves", vs.solves},
+                           {"mean_iterations", vs.solves ? double(vs.iterations) / vs.solves : 0.0},
+                           {"most_iterations", vs.most_iterations},
+                           {"largest_residual", vs.largest_residual},
+                           {"unconverged", vs.unconverged}};
     j["setup_seconds"] = setup_seconds;
     j["wall_seconds"] = wall;
     j["particle_steps_per_second"] = wall > 0 ? particle_steps / wall : 0.0;

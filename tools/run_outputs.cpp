@@ -4,6 +4,7 @@
 
 #include "coupling/free_surface_gauge.hpp"
 #include "coupling/rigid_bodies.hpp"
+#include "coupling/slide_front.hpp"
 #include "coupling/surge_front.hpp"
 
 namespace slide::tools {
@@ -61,6 +62,12 @@ RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& o
                    std::vector<std::string>{"time", "front", "wall_height", "T", "Z", "H_over_2a"});
   if (!scene.profiles.times.empty())
     profiles_.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
+  if (!scene.slides.empty()) {
+    slide_front_.emplace(out / "slide_front.csv", std::vector<std::string>{"time", "slide", "front_x", "front_y",
+                                                                           "front_along", "thickness_max", "particles"});
+    if (!scene.slide_outline_times.empty())
+      slide_outline_.emplace(out / "slide_outline.csv", std::vector<std::string>{"time", "slide", "x", "y"});
+  }
   eps_ = 1e-12 * std::max(1.0, scene.end_time);
   if (scene.output.snapshot_interval > 0) next_snapshot_ = scene.output.snapshot_interval;
   next_sample_ = scene.output.gauge_interval;
@@ -73,6 +80,7 @@ void RunOutputs::write_snapshot(const Particles<2>& P, double time, long step) {
 
 // Gauges and the surge front.
 void RunOutputs::sample() {
+  sample_slides();
   if (gauges_) {
     std::vector<double> row{sim_.time()};
     for (const auto& g : scene_.gauges) row.push_back(free_surface_elevation<2>(sim_, Vec<2>(g.x, 0.0)));
@@ -117,7 +125,35 @@ void RunOutputs::sample_profiles() {
   }
 }
 
+// Each deformable slide's front (the particle furthest along its front direction, and how far along that is), its
+// largest thickness over columns of width 2 dp, and its particle count (coupling/slide_front.hpp).
+void RunOutputs::sample_slides() {
+  if (!slide_front_) return;
+  const double dp = sim_.options.dp;
+  for (const auto& s : scene_.slides) {
+    const SlideFront f = measure_slide_front(sim_.particles, s.phase, s.front_direction, dp, 2.0 * dp);
+    const double row[] = {f.front[0], f.front[1], s.front_direction.dot(f.front), f.thickness_max,
+                          double(f.particles)};
+    slide_front_->add_labelled_row(sim_.time(), s.name, row);
+  }
+}
+
+// The slides' upper surfaces at the scene's outline times (the first step at or after each).
+void RunOutputs::sample_slide_outlines() {
+  const auto& times = scene_.slide_outline_times;
+  while (slide_outline_ && next_outline_ < times.size() && sim_.time() >= times[next_outline_] - 1e-12) {
+    for (const auto& s : scene_.slides)
+      for (const auto& p : slide_upper_surface(sim_.particles, s.phase, sim_.options.dp, 2.0 * sim_.options.dp)) {
+        const double row[] = {p[0], p[1]};
+        slide_outline_->add_labelled_row(sim_.time(), s.name, row);
+      }
+    ++next_outline_;
+  }
+}
+
 void RunOutputs::flush() {
+  if (slide_front_) slide_front_->flush();
+  if (slide_outline_) slide_outline_->flush();
   if (profiles_) profiles_->flush();
   if (bodies_) bodies_->flush();
   if (gauges_) gauges_->flush();
@@ -129,6 +165,7 @@ void RunOutputs::write_initial() {
   sample();
   sample_bodies();
   sample_profiles();
+  sample_slide_outlines();
   flush();
 }
 
@@ -139,6 +176,7 @@ void RunOutputs::after_step(Simulation<2>& sim, double) {
     next_sample_ = next_after(next_sample_, scene_.output.gauge_interval, t);
   }
   sample_profiles();
+  sample_slide_outlines();
   if (bodies_ && t >= next_body_sample_ - eps_) {
     sample_bodies();
     next_body_sample_ = next_after(next_body_sample_, scene_.body_sample_interval, t);

@@ -42,12 +42,14 @@ class RunOutputs : public StepObserver<2> {
   void sample();
   void sample_bodies();
   void sample_profiles();
+  void sample_slides();
+  void sample_slide_outlines();
 
   const cases::Scene& scene_;
   const Simulation<2>& sim_;
   std::optional<SnapshotWriter> snapshots_;
-  std::optional<CsvWriter> gauges_, front_, bodies_, profiles_;
-  std::size_t next_profile_ = 0;
+  std::optional<CsvWriter> gauges_, front_, bodies_, profiles_, slide_front_, slide_outline_;
+  std::size_t next_profile_ = 0, next_outline_ = 0;
   double eps_ = 0.0;
   double next_snapshot_ = std::numeric_limits<double>::infinity();
   double next_sample_ = 0.0;
