@@ -337,6 +337,11 @@ std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& p
       const Vec<2> l(corner[0] * size[0], corner[1] * size[1]);
       outline.push_back(to_rigid(c + Vec<2>(ca * l[0] - sa * l[1], sa * l[0] + ca * l[1])));
     }
+  } else if (sh["type"].as<std::string>() == "wedge") {
+    const Vec<2> apex = vec2(sh["apex"]);
+    const double leg = sh["leg"].as<double>(), s = sh["toward"].as<std::string>() == "+x" ? 1.0 : -1.0;
+    for (const auto& v : {apex, Vec<2>(apex + Vec<2>(s * leg, 0.0)), Vec<2>(apex + Vec<2>(s * leg, -leg))})
+      outline.push_back(to_rigid(v));
   } else {
     for (const auto& p : points_of(sh["points"])) outline.push_back(to_rigid(p));
   }

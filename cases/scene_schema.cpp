@@ -77,7 +77,14 @@ Schema body_schema() {
               S::map("a rectangle", {{"center", S::vector("centre", "m", 2, std::nullopt)},
                                      {"size", S::vector("width and height", "m", 2, std::nullopt, 0.0)},
                                      {"angle", S::number("rotation, counter-clockwise", "deg", 0.0, -360.0, 360.0)}})},
-             {"polygon", S::map("a convex polygon", {{"points", point_list("vertices (closed automatically)", 3)}})}})},
+             {"polygon", S::map("a convex polygon", {{"points", point_list("vertices (closed automatically)", 3)}})},
+             {"wedge", S::map("a right isosceles wedge resting on a 45 degree slope (Heinrich, Rzadkiewicz): horizontal top "
+                              "from the apex, vertical face at its far end, hypotenuse on the slope; vertices apex, "
+                              "apex + (s leg, 0), apex + (s leg, -leg), s = +1 for a slope descending towards +x",
+                              {{"apex", S::vector("the upper vertex on the slope", "m", 2, std::nullopt)},
+                               {"leg", S::number("length of the horizontal and vertical legs", "m", std::nullopt, 0.0,
+                                                 inf, true)},
+                               {"toward", S::choice("the way the slope descends", {"+x", "-x"}, "+x")}})}})},
        {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, inf)},
        {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, inf)},
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},

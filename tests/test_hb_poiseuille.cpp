@@ -12,6 +12,7 @@
 #include "fluid/walls.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/csv_table.hpp"
+#include "tests/scene_runner.hpp"
 
 namespace slide::testing {
 namespace {
@@ -94,15 +95,34 @@ ChannelRun run_channel(double n, int across, ViscousScheme scheme, const Regular
 // is none, yields, and the plug creeps. (Before the velocity gradient was corrected for the particles' arrangement,
 // fluid/strain_rate.hpp, n = 0.5 gave 4.3 % at 20 across, 3.6 % at 40 and 3.5 % at 80: a bias that refinement did
 // not remove, which was the "ten times worse than Bingham" gap.)
+// The shipped case (cases/hb_poiseuille_2d.yaml: n = 0.5, 20 across, 8 s) and its Bingham variant, through the scene.
+ChannelRun run_shipped(const std::vector<std::string>& overrides, double n) {
+  auto scene = load_shipped_scene("hb_poiseuille_2d.yaml", overrides);
+  auto& sim = *scene->simulation;
+  const auto start = std::clock();
+  EXPECT_TRUE(run_scene(*scene, [](const Simulation<2>&) {}));
+  ChannelRun run;
+  run.cpu_seconds = double(std::clock() - start) / CLOCKS_PER_SEC;
+  run.error = channel_profile_error(sim, closed_form(n), H);
+  run.steps = sim.step_count();
+  run.solves = sim.viscous_solves();
+  run.limits = sim.limit_counts();
+  std::printf("[ shipped HB Poiseuille n = %.1f ] L2 %.3f %%, centreline %+.3f %%, plug half width %.5f m, %ld steps, "
+              "%.2f s CPU\n", n, 100 * run.error.l2, 100 * run.error.centreline, run.error.plug_half_width, run.steps,
+              run.cpu_seconds);
+  return run;
+}
+
 TEST(HbPoiseuille, BinghamSteadyProfileAt20Across) {
-  const ChannelRun r = run_channel(1.0, 20, ViscousScheme::implicit, Papanastasiou{1000.0}, 8.0);
+  const ChannelRun r = run_shipped({"fluid.phases[0].rheology.flow_index=1", "fluid.phases[0].rheology.consistency=5",
+                                    "method.sound_speed=1.6"}, 1.0);
   EXPECT_LT(r.error.l2, 0.01);
   EXPECT_EQ(r.solves.unconverged, 0);
   EXPECT_EQ(r.limits[int(TimeStepLimit::viscous)], 0);  // the CFL limit sets dt
 }
 
 TEST(HbPoiseuille, ShearThinningSteadyProfileAt20Across) {
-  const ChannelRun r = run_channel(0.5, 20, ViscousScheme::implicit, Papanastasiou{1000.0}, 8.0);
+  const ChannelRun r = run_shipped({}, 0.5);
   EXPECT_LT(r.error.l2, 0.02);
   EXPECT_NEAR(r.error.plug_half_width, closed_form(0.5).plug_half_width(), 2.0 * H / 20);  // within one dp
   EXPECT_EQ(r.solves.unconverged, 0);
