@@ -165,5 +165,22 @@ bodies: [{name: b, shape: {type: box, center: [0.5, 0.5], size: [0.2, 0.2]}, den
   }
 }
 
+// Every scene in cases/ reads and builds (with a short settling where it settles): a shipped case is never broken.
+TEST(Scene, EveryShippedCaseBuilds) {
+  int built = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "cases")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const std::string name = entry.path().filename().string();
+    try {
+      auto scene = load_shipped_scene(name, {"method.settling_time=0.01"});
+      EXPECT_GT(scene->fluid_count, 0u) << name;
+      ++built;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << name << ": " << e.what();
+    }
+  }
+  EXPECT_GE(built, 10);
+}
+
 }  // namespace
 }  // namespace slide::testing
