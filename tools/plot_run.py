@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plots a slide run: wave gauges (gauges.png); for a dam break the surge front against Martin & Moyce (1952)
-(surge_front.png); for runs with bodies their position, velocity and fluid force against time (bodies.png); and
-free-surface profiles (profiles.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid,
+(surge_front.png); for runs with bodies their position, velocity and fluid force against time (bodies.png);
+free-surface profiles (profiles.png); for deformable slides the front and largest thickness against time and the upper
+surface at the outline times (slide.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid,
 e.g. resolutions, or a free and a prescribed run).
 Uses Debian's python3-matplotlib and python3-numpy through /usr/bin/python3."""
 import csv
@@ -110,6 +111,32 @@ def plot_profiles(runs, target):
     print("wrote", target)
 
 
+def plot_slides(runs, target):
+    fig, (front, shape) = plt.subplots(1, 2, figsize=(12, 4.5))
+    for run in runs:
+        rows = read_csv(os.path.join(run, "slide_front.csv"))
+        for slide in sorted({r["slide"] for r in rows}):
+            mine = [r for r in rows if r["slide"] == slide]
+            t = [float(r["time"]) for r in mine]
+            front.plot(t, [float(r["front_along"]) - float(mine[0]["front_along"]) for r in mine],
+                       label=f"{slide} front: {label_of(run)}")
+            front.plot(t, [float(r["thickness_max"]) for r in mine], "--", label=f"{slide} largest thickness")
+        outline = os.path.join(run, "slide_outline.csv")
+        if os.path.exists(outline):
+            rows = read_csv(outline)
+            for time in sorted({r["time"] for r in rows}, key=float):
+                mine = [r for r in rows if r["time"] == time]
+                shape.plot([float(r["x"]) for r in mine], [float(r["y"]) for r in mine], ".-", markersize=3,
+                           label=f"t = {float(time):.2f} s: {label_of(run)}")
+    front.set(xlabel="t (s)", ylabel="m", title="slide front (distance along its direction) and largest thickness")
+    shape.set(xlabel="x (m)", ylabel="y (m)", title="slide upper surface", aspect="equal")
+    front.legend(fontsize=7)
+    shape.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(target, dpi=110)
+    print("wrote", target)
+
+
 def main():
     runs = sys.argv[1:]
     if not runs:
@@ -123,6 +150,8 @@ def main():
         plot_bodies(runs, os.path.join(out, "bodies.png"))
     if all(os.path.exists(os.path.join(r, "profiles.csv")) for r in runs):
         plot_profiles(runs, os.path.join(out, "profiles.png"))
+    if all(os.path.exists(os.path.join(r, "slide_front.csv")) for r in runs):
+        plot_slides(runs, os.path.join(out, "slide.png"))
 
 
 if __name__ == "__main__":
