@@ -255,23 +255,18 @@ std::size_t water_inside_sediment(const Particles<2>& P, double re) {
   return inside;
 }
 
-// Issue 11's targets for the submerged dam break: it runs without instability, no particle is lost or changes
-// phase, the column collapses (its front moves more than two column widths, 0.4 m, in 1 s), and the phases stay
-// apart: no water particle inside the sediment (above) at any sample, every 0.02 s.
-//
-// DISABLED: the separation target is missed. Measured (viscosity 1e-3 Pa s, variational gradient, square lattice):
-// dp = 0.01, at most 12 water particles inside the sediment (t = 0.96 s; several with all 12-14 of their fluid
-// neighbours sediment, 6-15 dp above the floor, so pockets of water folded into the collapsing column, not a film
-// trapped under the nose at the floor); dp = 0.02, at most 2 (t = 0.74 s). Everything else passes: stable, counts
-// kept (5200 water + 800 sediment), front 0.195 -> 0.927 m (dp = 0.01) and 0.190 -> 0.850 m (dp = 0.02).
-TEST(TwoPhase, DISABLED_HeavyColumnCollapsesInWaterAndStaysApart) {
-  const double dp = 0.01;
-  auto scene = scene_from("submerged_dam_break", dam_break_scene(dp));
+struct DamBreakRun {
+  bool stable = false, counts_kept = false;
+  double front_moved = 0.0;        // m, of the sediment's right-most particle
+  std::size_t worst_inside = 0;    // water particles inside the sediment, most at any sample (every 0.02 s)
+};
+
+DamBreakRun run_submerged_dam_break(double dp) {
+  auto scene = scene_from("submerged_dam_break_" + std::to_string(int(std::lround(dp * 1000))), dam_break_scene(dp));
   const double re = scene->simulation->options.re_over_dp * dp;
   const auto counts0 = fluid_count_by_phase(scene->simulation->particles);
-  ASSERT_EQ(counts0.size(), 2u);
+  EXPECT_EQ(counts0.size(), 2u);
   const std::uint8_t sediment = counts0.rbegin()->first;
-  ASSERT_NE(sediment, water);
   auto front_of = [&](const Particles<2>& P) {
     double f = -1e300;
     for (std::size_t i = 0; i < P.real_count(); ++i)
@@ -279,24 +274,42 @@ TEST(TwoPhase, DISABLED_HeavyColumnCollapsesInWaterAndStaysApart) {
     return f;
   };
   const double front0 = front_of(scene->simulation->particles);
-  std::size_t worst_inside = 0, samples = 0;
-  double worst_inside_time = 0.0, next_sample = 0.0;
-  const bool stable = run_scene(*scene, [&](const Simulation<2>& sim) {
+  DamBreakRun r;
+  double worst_time = 0.0, next_sample = 0.0;
+  r.stable = run_scene(*scene, [&](const Simulation<2>& sim) {
     if (sim.time() < next_sample) return;
     next_sample += 0.02;
-    ++samples;
     const std::size_t n = water_inside_sediment(sim.particles, re);
-    if (n > worst_inside) worst_inside = n, worst_inside_time = sim.time();
+    if (n > r.worst_inside) r.worst_inside = n, worst_time = sim.time();
   });
   const auto& P = scene->simulation->particles;
-  const double front = front_of(P);
-  std::printf("submerged dam break, dp = %g m, 1 s: %zu water + %zu sediment particles; sediment front %.3f -> %.3f "
-              "m; water particles inside the sediment: at most %zu (t = %.2f s) over %zu samples\n",
-              dp, counts0.at(water), counts0.at(sediment), front0, front, worst_inside, worst_inside_time, samples);
-  EXPECT_TRUE(stable);
-  EXPECT_EQ(fluid_count_by_phase(P), counts0);
-  EXPECT_EQ(worst_inside, 0u);
-  EXPECT_GT(front - front0, 2 * column_width);
+  r.counts_kept = fluid_count_by_phase(P) == counts0;
+  r.front_moved = front_of(P) - front0;
+  std::printf("submerged dam break, dp = %g m, 1 s: sediment front moved %.3f m; water particles inside the sediment: "
+              "at most %zu (t = %.2f s)\n", dp, r.front_moved, r.worst_inside, worst_time);
+  return r;
+}
+
+// Issue 11's submerged dam break: it runs without instability, no particle is lost or changes phase, and the column
+// collapses (its front moves more than two column widths, 0.4 m, in 1 s). At dp = 0.02 (CI): front 0.190 -> 0.850 m.
+TEST(TwoPhase, HeavyColumnCollapsesInWaterWithoutInstability) {
+  const DamBreakRun r = run_submerged_dam_break(0.02);
+  EXPECT_TRUE(r.stable);
+  EXPECT_TRUE(r.counts_kept);
+  EXPECT_GT(r.front_moved, 2 * column_width);
+}
+
+// The phases stay apart: no water particle inside the sediment (above) at any sample.
+// DISABLED: the separation target is missed. Measured (viscosity 1e-3 Pa s, variational gradient, square lattice):
+// dp = 0.01, at most 12 water particles inside the sediment (t = 0.96 s; several with all 12-14 of their fluid
+// neighbours sediment, 6-15 dp above the floor, so pockets of water folded into the collapsing column, not a film
+// trapped under the nose at the floor); dp = 0.02, at most 2 (t = 0.74 s). Nothing in the pressure or viscous terms
+// keeps two phases from mixing; an interface treatment (e.g. a surface-tension-free interface sharpening or the
+// density-weighted gradient of multiphase MPS) is left for later.
+TEST(TwoPhase, DISABLED_HeavyColumnStaysApartFromTheWater) {
+  const DamBreakRun r = run_submerged_dam_break(0.01);
+  EXPECT_TRUE(r.stable);
+  EXPECT_EQ(r.worst_inside, 0u);
 }
 
 }  // namespace
