@@ -295,7 +295,8 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
   double steepest = -1.0;
   for (const auto& f : b.faces) {
     int touching = 0;
-    for (const auto& v : slide.outline) touching += signed_face_distance({f}, from_rigid(v)) < 0.5 * b.dp;
+    // |distance|: a vertex far behind a face of another wall polyline (a separate cup) does not touch it.
+    for (const auto& v : slide.outline) touching += std::abs(signed_face_distance({f}, from_rigid(v))) < 0.5 * b.dp;
     if (touching < 2) continue;
     const Vec<2> t = (f.b - f.a).normalized();
     const double steep = std::abs(t[1]);
