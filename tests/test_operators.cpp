@@ -9,46 +9,13 @@
 #include "fluid/laplacian.hpp"
 #include "fluid/lattice.hpp"
 #include "fluid/number_density.hpp"
+#include "tests/lattice_block.hpp"
 
 namespace slide {
 namespace {
 
-template <int D>
-struct Lattice {
-  static constexpr int side = 11;
-  double dp = 0.1, re = 0.21;
-  Particles<D> particles;
-  NeighborList list;
-  LatticeConstants constants;
-  std::size_t centre = 0;
+using testing::Lattice;
 
-  // The square (cubic) lattice, or in 2-D the hexagonal one (fluid/lattice.hpp).
-  explicit Lattice(LatticeKind kind = LatticeKind::square) {
-    const int kmax = D == 3 ? side : 1;
-    for (int k = 0; k < kmax; ++k)
-      for (int j = 0; j < side; ++j)
-        for (int i = 0; i < side; ++i) {
-          Vec<D> x;
-          if constexpr (D == 2) {
-            x = lattice_point(kind, dp, i, j);
-          } else {
-            x = Vec<D>(i * dp, j * dp, k * dp);
-          }
-          const std::size_t n = particles.add(x, Kind::fluid, 0, 1000.0, 1e-3);
-          if (i == side / 2 && j == side / 2 && (D == 2 || k == side / 2)) centre = n;
-        }
-    NeighborGrid<D> grid(Vec<D>::Constant(-dp), Vec<D>::Constant((side + 2) * dp), re);
-    grid.bin(particles.position);
-    build_neighbor_list(grid, particles.position, re, list);
-    constants = lattice_constants<D>(dp, re, kind);
-  }
-  // Particles whose whole kernel support lies inside the lattice.
-  bool interior(std::size_t i) const {
-    for (int k = 0; k < D; ++k)
-      if (particles.position[i][k] < 3 * dp - 1e-9 || particles.position[i][k] > (side - 4) * dp + 1e-9) return false;
-    return true;
-  }
-};
 
 template <int D>
 void expect_number_density_is_n0(LatticeKind kind = LatticeKind::square) {

@@ -2,6 +2,8 @@
 // regular lattices and next to a no-slip floor.
 #include <gtest/gtest.h>
 
+#include "tests/lattice_block.hpp"
+
 #include <set>
 
 #include <algorithm>
@@ -226,36 +228,16 @@ void build_list(const Particles<D>& P, double re, NeighborList& list) {
   build_neighbor_list(grid, P.position, re, list);
 }
 
-// A block of fluid on the square (cubic) or hexagonal lattice, as in tests/test_operators.cpp.
+// The operator tests' block of fluid (tests/lattice_block.hpp), with velocities and a shear-rate check.
 template <int D>
-struct Block {
-  static constexpr int side = 11;
-  double dp = 0.1, re = 0.21;
-  Particles<D> particles;
-  NeighborList list;
-  LatticeConstants constants;
-
-  explicit Block(LatticeKind kind = LatticeKind::square) {
-    const int kmax = D == 3 ? side : 1;
-    for (int k = 0; k < kmax; ++k)
-      for (int j = 0; j < side; ++j)
-        for (int i = 0; i < side; ++i) {
-          Vec<D> x;
-          if constexpr (D == 2) {
-            x = lattice_point(kind, dp, i, j);
-          } else {
-            x = Vec<D>(i * dp, j * dp, k * dp);
-          }
-          particles.add(x, Kind::fluid, 0, 1000.0, 1e-3);
-        }
-    build_list<D>(particles, re, list);
-    constants = lattice_constants<D>(dp, re, kind);
-  }
-  bool interior(std::size_t i) const {
-    for (int k = 0; k < D; ++k)
-      if (particles.position[i][k] < 3 * dp - 1e-9 || particles.position[i][k] > (side - 4) * dp + 1e-9) return false;
-    return true;
-  }
+struct Block : testing::Lattice<D> {
+  using testing::Lattice<D>::Lattice;
+  using testing::Lattice<D>::particles;
+  using testing::Lattice<D>::list;
+  using testing::Lattice<D>::constants;
+  using testing::Lattice<D>::dp;
+  using testing::Lattice<D>::re;
+  using testing::Lattice<D>::interior;
   template <class F>
   void set_velocity(F&& u) {
     for (std::size_t i = 0; i < particles.size(); ++i) particles.velocity[i] = u(particles.position[i]);
