@@ -2,12 +2,10 @@
 // regular lattices and next to a no-slip floor.
 #include <gtest/gtest.h>
 
-#include "tests/lattice_block.hpp"
-
-#include <set>
-
 #include <algorithm>
+
 #include <cmath>
+#include <set>
 #include <string_view>
 #include <vector>
 
@@ -15,6 +13,7 @@
 #include "fluid/phase.hpp"
 #include "fluid/strain_rate.hpp"
 #include "fluid/walls.hpp"
+#include "tests/lattice_block.hpp"
 
 namespace slide {
 namespace {
