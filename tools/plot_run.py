@@ -28,7 +28,8 @@ def label_of(run_dir):
     try:
         run = json.load(open(os.path.join(run_dir, "run.json")))
         dp = run["scene"]["particle_spacing"]
-        return f"{run['case']} dp={dp:g} m ({run['scene']['method']['gradient']})"
+        sets = [o for o in run.get("overrides", []) if not o.startswith(("particle_spacing", "output."))]
+        return f"{run['case']} dp={dp:g} m ({run['scene']['method']['gradient']}){' ' + ' '.join(sets) if sets else ''}"
     except (OSError, KeyError, ValueError):
         return os.path.basename(os.path.normpath(run_dir))
 
