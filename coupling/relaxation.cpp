@@ -62,6 +62,7 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   }
   const double saved_rate = sim.options.velocity_damping_rate;
   sim.set_velocity_damping(damping_rate);
+  sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
   SettlingObserver observer(out, floating ? bodies.get() : nullptr, P, held_phases);
   const AdvanceResult result = advance<2>(sim, duration, {&observer});
   if (result.instability)
@@ -76,6 +77,7 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
     out.largest_shift = std::max(out.largest_shift, shift.norm());
   }
   sim.set_velocity_damping(saved_rate);
+  sim.set_rheology_suspended(false);
   if (floating) {
     bodies->set_settling(false);
     bodies->take_mean_forces();  // the settling's forces are not the run's

@@ -73,6 +73,10 @@ class Simulation {
   // Fluid velocities decay as exp(-rate t) in every step (settling only; 0 = off).
   void set_velocity_damping(double rate_per_s) { options.velocity_damping_rate = rate_per_s; }
 
+  // While settling (coupling/relaxation.hpp), non-Newtonian phases take settling_viscosity (fluid/rheology/rheology.hpp)
+  // instead of their rheology, so that their pressure settles hydrostatic; the rheology acts again once it is off.
+  void set_rheology_suspended(bool suspended) { rheology_suspended_ = suspended; }
+
   // Computes n0 and lambda from the lattice, builds the neighbour list, and evaluates number density and
   // pressure at the initial positions. Throws std::invalid_argument for a periodic domain with rigid bodies, with a
   // period shorter than twice re + skin, or with a boundary particle outside the period.
@@ -129,6 +133,7 @@ class Simulation {
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
   bool rheology_ = false;  // some phase is non-Newtonian
+  bool rheology_suspended_ = false;
   ImplicitViscosity implicit_viscosity_;
   ViscousSolveStats viscous_solves_;
   ViscousSolveReport last_viscous_solve_;

@@ -18,10 +18,29 @@ inline double effective_viscosity(const Rheology& r, double shear_rate_per_s, do
   return std::visit([&](const auto& m) { return m.effective_viscosity(shear_rate_per_s, pressure_pa); }, r);
 }
 
+// The viscosity a phase settles with before t = 0 (coupling/relaxation.hpp), in Pa s: the model without its yield
+// term at a shear rate of 1/s (Newtonian: mu; Herschel-Bulkley and Mohr-Coulomb: K; mu(I): its floor min_viscosity).
+// Why: at rest a yield-stress model's regularised viscosity (tau_y m, up to 1e6 Pa s) resists the compression that
+// the equation of state needs to build the weight's pressure, so sediment settled with its rheology keeps a third to
+// a half of its hydrostatic pressure (measured: Mohr-Coulomb layer, phi = 30 deg, m = 1000 s, 1 s of settling), and
+// a pressure-dependent yield stress then holds too little. Settled as a fluid its pressure is hydrostatic.
+inline double settling_viscosity(const Rheology& r) {
+  if (const auto* m = std::get_if<Newtonian>(&r)) return m->viscosity_pa_s;
+  if (const auto* m = std::get_if<HerschelBulkley>(&r)) return m->consistency_pa_s_n;
+  if (const auto* m = std::get_if<MohrCoulomb>(&r)) return m->consistency_pa_s_n;
+  return std::get<GranularMuI>(r).min_viscosity_pa_s;
+}
+
 // Whether the model has a yield stress (so an unsheared region stays rigid up to its regularisation): Herschel-
 // Bulkley with tau_y > 0, Mohr-Coulomb and mu(I) always.
 inline bool has_yield_stress(const Rheology& r) {
   if (const auto* hb = std::get_if<HerschelBulkley>(&r)) return hb->yield_stress_pa > 0.0;
+  return std::holds_alternative<MohrCoulomb>(r) || std::holds_alternative<GranularMuI>(r);
+}
+
+// Whether the viscosity depends on the pressure (the yield stress of Mohr-Coulomb, mu(I)'s eta = mu p / g): the
+// rheology stage then gives it the confining pressure (fluid/confining_pressure.hpp).
+inline bool depends_on_pressure(const Rheology& r) {
   return std::holds_alternative<MohrCoulomb>(r) || std::holds_alternative<GranularMuI>(r);
 }
 
