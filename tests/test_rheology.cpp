@@ -213,6 +213,21 @@ TEST(Rheology, VariantDispatchNamesAndYieldStress) {
   EXPECT_EQ(effective_viscosity(phases[3].rheology, 2.0, 500.0),
             std::get<MohrCoulomb>(phases[3].rheology).effective_viscosity(2.0, 500.0));
   EXPECT_EQ(effective_viscosity(phases[4].rheology, 2.0, 500.0), sand().effective_viscosity(2.0, 500.0));
+  const std::vector<bool> pressure{false, false, false, true, true};
+  for (std::size_t k = 0; k < phases.size(); ++k) EXPECT_EQ(depends_on_pressure(phases[k].rheology), pressure[k]);
+}
+
+// Before t = 0 a phase settles as a fluid: Newtonian mu, Herschel-Bulkley's and Mohr-Coulomb's K (the model without
+// its yield term at 1/s), mu(I)'s floor.
+TEST(Rheology, SettlingViscosityIsTheModelWithoutItsYieldTerm) {
+  EXPECT_EQ(settling_viscosity(Newtonian{1e-3}), 1e-3);
+  const HerschelBulkley hb{40.0, 0.5, 0.7, Papanastasiou{100.0}, 1e3};
+  EXPECT_EQ(settling_viscosity(hb), 0.5);
+  EXPECT_EQ(settling_viscosity(hb), HerschelBulkley({0.0, 0.5, 0.7, Papanastasiou{100.0}, 1e3}).effective_viscosity(1.0, 0.0));
+  EXPECT_EQ(settling_viscosity(MohrCoulomb{5.0, 30.0, 2.0, 1.0, Papanastasiou{100.0}, 1e3}), 2.0);
+  GranularMuI g = sand();
+  g.min_viscosity_pa_s = 0.25;
+  EXPECT_EQ(settling_viscosity(g), 0.25);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
