@@ -13,6 +13,7 @@
 #include "cases/body_choices.hpp"
 #include "cases/body_model.hpp"
 #include "cases/scene_build.hpp"
+#include "fluid/basal_friction.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
@@ -266,7 +267,9 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
     throw SceneError(path + ".density", "a deformable slide needs its density (mass is for rigid bodies)");
   const std::string name = bn["name"].as<std::string>();
   const Rheology rheology = read_rheology(model, bn["rheology"]);
-  const std::size_t phase = b.phases.add(name, density, rheology, path + ".name");
+  const std::size_t phase =
+      b.phases.add(name, density, rheology, basal_friction_coefficient(bn["basal_friction_angle"].as<double>()),
+                   path + ".name");
   b.slides.push_back({path, outline, phase});
   SlideReport rep;
   rep.name = name;
@@ -284,7 +287,7 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
 // (the steepest such face); a layer of its largest thickness normal to that face, of buoyant density (rho_s - rho_w
 // below the still-water level), has the basal shear stress tau = rho' g h sin(theta); it holds tau_y
 // (Herschel-Bulkley), c + rho' g h cos(theta) tan(phi) (Mohr-Coulomb), mu_s rho' g h cos(theta) (mu(I)), nothing
-// (Newtonian).
+// (Newtonian); with a basal friction mu_b the wall holds mu_b rho' g h cos(theta) at its base.
 void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, SlideReport& rep) {
   const Particles<2>& P = b.sim->particles;
   for (std::size_t i = 0; i < P.size(); ++i)
@@ -323,6 +326,12 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
                               "stress {:.4g} Pa against {:.4g} Pa it holds: {}",
                               rep.slope_angle_deg, h, buoyant, rep.basal_shear_stress, rep.strength,
                               rep.basal_shear_stress <= rep.strength ? "stands at rest (rigid throughout)" : "flows");
+  // A Coulomb basal friction (fluid/basal_friction.hpp) bounds what the wall holds at the base.
+  const double mu_b = b.phases.phases[slide.phase].basal_friction;
+  if (std::isfinite(mu_b))
+    rep.criterion += fmt::format("; at its base the wall holds mu_b x normal stress = {:.4g} Pa: {}",
+                                 mu_b * normal_stress,
+                                 rep.basal_shear_stress <= mu_b * normal_stress ? "holds" : "slides");
 }
 
 }  // namespace

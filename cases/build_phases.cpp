@@ -4,6 +4,7 @@
 
 #include "cases/scene_build.hpp"
 #include "cases/viscous_scheme_choice.hpp"
+#include "fluid/basal_friction.hpp"
 
 namespace slide::cases {
 
@@ -14,13 +15,14 @@ std::size_t ScenePhases::find(const std::string& name, const std::string& key) c
   return it->second;
 }
 
-std::size_t ScenePhases::add(const std::string& name, double density, const Rheology& rheology, const std::string& key) {
+std::size_t ScenePhases::add(const std::string& name, double density, const Rheology& rheology, double basal_friction,
+                             const std::string& key) {
   if (index.count(name)) throw SceneError(key, "duplicate phase name \"" + name + "\" (phases and deformable slides share names)");
   if (phases.size() >= 255) throw SceneError(key, "more than 255 phases");
   index[name] = phases.size();
   // A non-Newtonian phase's particles are made with its viscosity at rest; the rheology stage sets it from the first
   // step on (coupling/simulation.cpp).
-  phases.push_back({name, density, effective_viscosity(rheology, 0.0, 0.0), rheology});
+  phases.push_back({name, density, effective_viscosity(rheology, 0.0, 0.0), rheology, basal_friction});
   return phases.size() - 1;
 }
 
@@ -29,7 +31,7 @@ ScenePhases read_phases(const YAML::Node& list) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     const auto ph = list[k];
     out.add(ph["name"].as<std::string>(), ph["density"].as<double>(), read_rheology(ph["rheology"]),
-            fmt::format("fluid.phases[{}].name", k));
+            basal_friction_coefficient(ph["basal_friction_angle"].as<double>()), fmt::format("fluid.phases[{}].name", k));
   }
   return out;
 }
@@ -38,7 +40,7 @@ ScenePhases read_phases(const YAML::Node& list) {
 void set_phases(SceneBuild& b) {
   bool non_newtonian = false;
   for (const auto& p : b.phases.phases) {
-    b.sim->phases.push_back(Phase{p.name, p.density, p.rheology});
+    b.sim->phases.push_back(Phase{p.name, p.density, p.rheology, p.basal_friction});
     non_newtonian = non_newtonian || !std::holds_alternative<Newtonian>(p.rheology);
   }
   auto& o = b.options();

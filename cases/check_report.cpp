@@ -81,13 +81,20 @@ double memory_estimate_mb(const Simulation<2>& sim) {
   return (2.0 * n * per_particle + n * sizeof(Vec<2>) * 2 + list) / 1.0e6;
 }
 
+// A phase's wall condition (fluid/basal_friction.hpp).
+static std::string basal_condition(double mu_b) {
+  if (!std::isfinite(mu_b)) return "no-slip at walls";
+  return fmt::format("basal friction {:.4g} deg (mu_b {:.4g}) at walls", std::atan(mu_b) * 180.0 / M_PI, mu_b);
+}
+
 // The phases with their rheology and the viscous scheme; each deformable slide with its particles, mass and yield
 // criterion at rest.
 std::string phases_and_slides(const Scene& scene) {
   const auto& sim = *scene.simulation;
   std::string out;
   for (const auto& p : sim.phases)
-    out += fmt::format("phase {:<9} {} kg/m^3, {}\n", p.name, p.density_kg_m3, model_name(p.rheology));
+    out += fmt::format("phase {:<9} {} kg/m^3, {}, {}\n", p.name, p.density_kg_m3, model_name(p.rheology),
+                       basal_condition(p.basal_friction));
   out += fmt::format("viscous scheme  {}\n", to_string(sim.options.viscous_scheme));
   for (const auto& s : scene.slides)
     out += fmt::format("slide {:<9} deformable ({}), {} particles, area {:.6g} m^2, mass {:.6g} kg/m (particles {:.6g})\n"

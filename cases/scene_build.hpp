@@ -25,6 +25,7 @@ struct ScenePhases {
     double density = 0.0;    // kg/m^3
     double viscosity = 0.0;  // Pa s, the particles' viscosity as made (a non-Newtonian model's at rest)
     Rheology rheology = Newtonian{1e-3};
+    double basal_friction = std::numeric_limits<double>::infinity();  // mu_b; infinity: no-slip
   };
   std::map<std::string, std::size_t> index;  // name -> index into `phases` (Particles::phase)
   std::vector<Properties> phases;
@@ -32,7 +33,8 @@ struct ScenePhases {
   // The phase a region names; the empty name is the first phase. Throws SceneError at `key` for an unknown name.
   std::size_t find(const std::string& name, const std::string& key) const;
   // Adds a phase (a deformable slide's); throws SceneError at `key` if the name is taken or there are too many.
-  std::size_t add(const std::string& name, double density, const Rheology& rheology, const std::string& key);
+  std::size_t add(const std::string& name, double density, const Rheology& rheology, double basal_friction,
+                  const std::string& key);
 };
 
 struct SceneBuild {

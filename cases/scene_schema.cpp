@@ -22,11 +22,17 @@ Schema point_list(std::string doc, std::size_t min_points) {
   return S::list(std::move(doc), S::vector("a point [x, y]", "m", 2, std::nullopt), min_points);
 }
 
+// One key for a phase's and a deformable slide's basal condition (fluid/basal_friction.hpp).
+Schema basal_friction_angle_schema(const std::string& extra = "") {
+  return S::number(std::string("Coulomb friction angle phi_b against walls: the wall shear stress on this material is at most tan(phi_b) times its pressure, so it slides on a wall rather than sticking (fluid/basal_friction.hpp); 90 = no bound, the no-slip wall of method.wall_slip (the default; free_slip leaves walls out whatever this says)") + extra, "deg", 90.0, 0.0, 90.0);
+}
+
 Schema phase_schema() {
   return S::map("one phase of fluid particles",
                 {{"name", S::text("name that regions refer to", std::nullopt)},
                  {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, inf, true)},
-                 {"rheology", rheology_schema()}});
+                 {"rheology", rheology_schema()},
+                 {"basal_friction_angle", basal_friction_angle_schema()}});
 }
 
 Schema region_schema() {
@@ -90,6 +96,9 @@ Schema body_schema() {
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
        {"rheology", rheology_parameters_schema()},
+       {"basal_friction_angle",
+        basal_friction_angle_schema("; deformable slides only (a rigid body's Coulomb coefficient against walls is "
+                                    "`friction`, which a deformable slide ignores: its default 0 would be frictionless)")},
        {"front_direction", S::vector("deformable slides: slide_front.csv's front is the particle furthest along this "
                                      "direction", "", 2, std::vector<double>{1.0, 0.0})},
        {"motion",

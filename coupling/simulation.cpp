@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fluid/artificial_viscosity.hpp"
+#include "fluid/basal_friction.hpp"
 #include "fluid/collision.hpp"
 #include "fluid/confining_pressure.hpp"
 #include "fluid/number_density.hpp"
@@ -47,6 +48,8 @@ void Simulation<D>::initialise() {
   lattice = lattice_constants<D>(dp, re(), options.lattice);
   rheology_ = false;
   for (const auto& ph : phases) rheology_ = rheology_ || !std::holds_alternative<Newtonian>(ph.rheology);
+  basal_friction_ = false;
+  for (const auto& ph : phases) basal_friction_ = basal_friction_ || std::isfinite(ph.basal_friction);
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   Vec<D> grid_lo = options.domain_lo, grid_hi = options.domain_hi;
   if (options.periodic_x) {
@@ -71,6 +74,7 @@ void Simulation<D>::restart_at_rest() {
     if (P.kind[i] != Kind::fluid) continue;
     P.velocity[i] = Vec<D>::Zero();
     P.acceleration[i] = Vec<D>::Zero();
+    P.wall_fraction[i] = 1.0;  // at rest nothing slides
   }
   time_ = 0.0;
   step_count_ = 0;
@@ -213,25 +217,40 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
 
 // Rheology: each fluid particle's viscosity from its phase's model at its shear rate (fluid/strain_rate.hpp, walls
 // mirrored as in the viscous term) and its pressure, both of the start of the step (the viscosity is lagged).
+// Basal friction: then, for a phase with a Coulomb basal friction, the fraction of that viscosity its wall pairs use
+// (fluid/basal_friction.hpp), from the same start-of-step velocities and pressures (lagged alike).
 template <int D>
 void Simulation<D>::update_viscosity() {
-  if (!rheology_) return;
+  if (!rheology_ && !basal_friction_) return;
   auto& P = particles;
   const std::size_t n = P.real_count();
   const double r_e = re();
-  parallel_for(n, [&](std::size_t i) {
-    if (P.kind[i] != Kind::fluid) return;
-    const Rheology& model = phases[P.phase[i]].rheology;
-    if (std::holds_alternative<Newtonian>(model)) return;
-    if (rheology_suspended_) {
-      P.viscosity[i] = settling_viscosity(model);
-      return;
-    }
-    const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.viscous_wall());
-    const double pressure = depends_on_pressure(model) ? confining_pressure<D>(i, P, list_, r_e) : P.pressure[i];
-    P.viscosity[i] = effective_viscosity(model, rate, pressure);
-  });
-  copy_to_ghosts(P, P.viscosity);
+  if (rheology_) {
+    parallel_for(n, [&](std::size_t i) {
+      if (P.kind[i] != Kind::fluid) return;
+      const Rheology& model = phases[P.phase[i]].rheology;
+      if (std::holds_alternative<Newtonian>(model)) return;
+      if (rheology_suspended_) {
+        P.viscosity[i] = settling_viscosity(model);
+        return;
+      }
+      const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.viscous_wall());
+      const double pressure = depends_on_pressure(model) ? confining_pressure<D>(i, P, list_, r_e) : P.pressure[i];
+      P.viscosity[i] = effective_viscosity(model, rate, pressure);
+    });
+    copy_to_ghosts(P, P.viscosity);
+  }
+  if (basal_friction_ && options.wall_slip == WallSlip::no_slip) {
+    const ViscousWall wall = options.viscous_wall();
+    parallel_for(n, [&](std::size_t i) {
+      if (P.kind[i] != Kind::fluid) return;
+      const double mu_b = phases[P.phase[i]].basal_friction;
+      if (!std::isfinite(mu_b)) return;
+      const WallShear s = wall_shear<D>(i, P, list_, r_e, wall.min_distance, options.gravity);
+      P.wall_fraction[i] = coulomb_wall_fraction(P.viscosity[i], mu_b, s.normal_stress, s.rate);
+    });
+    copy_to_ghosts(P, P.wall_fraction);
+  }
 }
 
 // Viscosity and gravity give the predicted velocity and position (fluid only). Explicitly, the viscous term is

@@ -54,6 +54,7 @@ class Simulation {
   FluidOptions<D> options;
   // The phases particles refer to (Particles::phase). With any non-Newtonian phase, every fluid particle's viscosity
   // is set from its phase's rheology at the start of each step; empty: viscosities stay as the particles were made.
+  // A phase with a finite basal_friction gets its particles' wall viscosity (Particles::wall_fraction) there too.
   std::vector<Phase> phases;
 
   // Derived at initialise(): lattice constants, equation of state, grid.
@@ -134,6 +135,7 @@ class Simulation {
   long rebuilds_ = 0;
   bool rheology_ = false;  // some phase is non-Newtonian
   bool rheology_suspended_ = false;
+  bool basal_friction_ = false;  // some phase has a Coulomb basal friction (fluid/basal_friction.hpp)
   ImplicitViscosity implicit_viscosity_;
   ViscousSolveStats viscous_solves_;
   ViscousSolveReport last_viscous_solve_;

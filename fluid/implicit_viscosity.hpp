@@ -8,8 +8,9 @@
 // set by the CFL limit alone.
 //
 // For every fluid particle i (c = 2d / (lambda n0), seed eq. 4; mu_ij the harmonic mean across a pair; walls
-// mirrored as in viscous_pair_term, factor f_ij = no_slip_mirror_factor, with the wall's velocity u_b):
-//   rho_i u*_i - dt c [ sum_fluid mu_ij W_ij (u*_j - u*_i) + sum_wall mu_i f_ij W_ij (u_b,j - u*_i) ]
+// mirrored as in viscous_pair_term, factor f_ij = no_slip_mirror_factor, with the wall's velocity u_b and the wall
+// viscosity mu_w,i = s_i mu_i, lagged like mu_i: fluid/basal_friction.hpp):
+//   rho_i u*_i - dt c [ sum_fluid mu_ij W_ij (u*_j - u*_i) + sum_wall mu_w,i f_ij W_ij (u_b,j - u*_i) ]
 //       = rho_i (u_i + dt a_i),
 // a_i the explicit accelerations (gravity, artificial viscosity). Multiplied by rho_i (not divided), the matrix is
 // symmetric (mu_ij W_ij = mu_ji W_ji) and strictly diagonally dominant with a positive diagonal, hence symmetric
@@ -119,7 +120,7 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
       } else if (wall.slip == WallSlip::no_slip) {
         const double d_j = P.wall_depth[j];
         const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-        const double a = dt * c * mu_i * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w;
+        const double a = dt * c * mu_i * P.wall_fraction[i] * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w;
         diagonal += a;
         b += a * P.velocity[j];
       }

@@ -24,6 +24,9 @@ struct Particles {
   std::vector<double> number_density;
   std::vector<double> density;    // reference density of the particle's phase, kg/m^3
   std::vector<double> viscosity;  // dynamic viscosity, Pa s
+  // Fluid particles: the fraction s = mu_w / mu of their viscosity that their wall pairs use, below 1 where a Coulomb
+  // basal friction bounds the wall's shear stress (fluid/basal_friction.hpp); 1, the no-slip wall, otherwise.
+  std::vector<double> wall_fraction;
   std::vector<std::uint8_t> phase;
   std::vector<Kind> kind;
   std::vector<std::uint32_t> id;  // stable identity: the index at creation, kept through re-sorting
@@ -69,6 +72,7 @@ struct Particles {
     f(number_density);
     f(density);
     f(viscosity);
+    f(wall_fraction);
     f(phase);
     f(kind);
     f(id);
@@ -90,6 +94,7 @@ struct Particles {
     number_density.push_back(0.0);
     density.push_back(rho);
     viscosity.push_back(mu);
+    wall_fraction.push_back(1.0);
     phase.push_back(phase_index);
     kind.push_back(k);
     id.push_back(static_cast<std::uint32_t>(i));

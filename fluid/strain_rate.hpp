@@ -14,13 +14,17 @@ namespace slide {
 
 // u_j,eff - u_i for neighbour j of fluid particle i: u_j - u_i for a fluid neighbour, the no-slip mirror of
 // fluid/viscosity.hpp (no_slip_mirror_factor), the same as the viscous term's,
-// for a boundary neighbour (wall or dummy).
+// for a boundary neighbour (wall or dummy). Where a Coulomb basal friction lets the particle slide (wall_fraction
+// s_i < 1, fluid/basal_friction.hpp) the wall carries only s_i of the no-slip stress, and its pair enters with s_i:
+// the shear the material itself sees at the wall is the wall stress over its viscosity, not the slip over the
+// distance (a block sliding as one would otherwise read its slip as shear in its bottom rows and yield there).
+// s_i is the previous step's (lagged).
 template <int D>
 inline Vec<D> velocity_difference(std::size_t i, std::uint32_t j, const Particles<D>& P, double min_distance) {
   if (P.kind[j] == Kind::fluid) return P.velocity[j] - P.velocity[i];
   const double d_j = P.wall_depth[j];
   const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-  return no_slip_mirror_factor(d_i, d_j, min_distance) * (P.velocity[j] - P.velocity[i]);
+  return (P.wall_fraction[i] * no_slip_mirror_factor(d_i, d_j, min_distance)) * (P.velocity[j] - P.velocity[i]);
 }
 
 // Velocity gradient L_ab = du_a / dx_b of fluid particle i: seed eq. 3 (the MPS gradient, Koshizuka & Oka 1996)

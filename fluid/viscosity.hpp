@@ -44,7 +44,8 @@ inline double no_slip_mirror_factor(double d_i, double d_j, double min_distance)
 // which equals mu for a single fluid.
 // Boundary neighbours:
 //  * no_slip: the fluid velocity is mirrored into the wall (no_slip_mirror_factor above), relative to the
-//    boundary's own velocity for a moving body.
+//    boundary's own velocity for a moving body; with the wall viscosity mu_w,i = s_i mu_i (Particles::wall_fraction,
+//    below 1 for a phase with a Coulomb basal friction: fluid/basal_friction.hpp).
 //  * free_slip: boundary particles exert no shear; they are left out of the sum.
 template <int D>
 inline Vec<D> viscous_pair_term(std::size_t i, std::uint32_t j, double r2, const Particles<D>& P, double re,
@@ -61,7 +62,9 @@ inline Vec<D> viscous_pair_term(std::size_t i, std::uint32_t j, double r2, const
   if (wall.slip == WallSlip::free_slip) return Vec<D>::Zero();
   const double d_j = P.wall_depth[j];
   const double d_i = P.wall_normal[j].dot(x[i] - x[j]) - d_j;
-  return (mu_i * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w) * (u[j] - u[i]);
+  // mu_w,i = s_i mu_i: the wall viscosity, below mu_i where a Coulomb basal friction bounds the wall's shear stress
+  // (fluid/basal_friction.hpp; s_i = 1 otherwise).
+  return (mu_i * P.wall_fraction[i] * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w) * (u[j] - u[i]);
 }
 
 template <int D>

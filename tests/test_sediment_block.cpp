@@ -7,41 +7,18 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <unordered_map>
 
 #include <fmt/format.h>
 
 #include "coupling/slide_front.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
+#include "tests/sediment_block.hpp"
 
 namespace slide::testing {
 namespace {
 
 constexpr double g = 9.81;
-
-std::unique_ptr<cases::Scene> build(const std::string& name, const std::string& yaml) {
-  const auto dir = fresh_directory(name);
-  write_file(dir / "s.yaml", yaml);
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
-}
-
-// The positions of the slide's particles by id (periodic ghosts, fluid/periodic.hpp, are not particles of their own).
-std::unordered_map<std::uint32_t, Vec<2>> slide_positions(const Particles<2>& P, std::uint8_t phase) {
-  std::unordered_map<std::uint32_t, Vec<2>> out;
-  for (std::size_t i = 0; i < P.real_count(); ++i)
-    if (P.kind[i] == Kind::fluid && P.phase[i] == phase) out.emplace(P.id[i], P.position[i]);
-  return out;
-}
-
-// Largest distance of a slide particle from where it was at t = 0.
-double largest_displacement(const Particles<2>& P, std::uint8_t phase,
-                            const std::unordered_map<std::uint32_t, Vec<2>>& start) {
-  double most = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == Kind::fluid && P.phase[i] == phase) most = std::max(most, (P.position[i] - start.at(P.id[i])).norm());
-  return most;
-}
 
 // A 0.2 m x 0.1 m block of 1950 kg/m^3 on the floor of a 0.8 m tank under 0.2 m of still water, dp = 0.02 m,
 // Bingham with the given yield stress and consistency; the water settles around the held block for 0.5 s.
@@ -71,7 +48,7 @@ constexpr double buoyant_weight_per_area = (1950.0 - 1000.0) * g * 0.1;
 
 TEST(SedimentBlock, WithEnoughYieldStressStaysPut) {
   const double tau_y = 3000.0;  // 3.2 rho' g h
-  auto scene = build("block_stays", block_on_floor(tau_y, 1.0));
+  auto scene = build_scene_text("block_stays", block_on_floor(tau_y, 1.0));
   ASSERT_EQ(scene->slides.size(), 1u);
   const std::uint8_t phase = scene->slides[0].phase;
   auto& sim = *scene->simulation;
@@ -91,7 +68,7 @@ TEST(SedimentBlock, WithEnoughYieldStressStaysPut) {
 // The same block without a yield stress, a viscous fluid of 0.1 Pa s twice as dense as the water: it slumps, its
 // thickness (the largest column thickness, 2 dp columns as slide_front.csv) drops and its front moves out.
 TEST(SedimentBlock, WithoutYieldStressSlumps) {
-  auto scene = build("block_slumps", block_on_floor(0.0, 0.1));
+  auto scene = build_scene_text("block_slumps", block_on_floor(0.0, 0.1));
   const std::uint8_t phase = scene->slides[0].phase;
   auto& sim = *scene->simulation;
   const double dp = sim.options.dp;
@@ -143,7 +120,7 @@ output: {{snapshots: false}}
 )",
                                        fmt::arg("end", end_time), fmt::arg("gx", g * std::sin(a)),
                                        fmt::arg("gy", -g * std::cos(a)), fmt::arg("period", period));
-  auto scene = build(fmt::format("mc_layer_{:.0f}", slope_deg), yaml);
+  auto scene = build_scene_text(fmt::format("mc_layer_{:.0f}", slope_deg), yaml);
   auto& sim = *scene->simulation;
   // Down-slope displacement with the periodic wrap undone: particles are followed by id, step by step.
   std::unordered_map<std::uint32_t, Vec<2>> start = slide_positions(sim.particles, 0), last = start, unwrapped = start;
