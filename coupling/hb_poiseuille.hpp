@@ -48,14 +48,14 @@ struct ChannelProfileError {
 // (K g^n = G |y| - tau0 where sheared: linear in y). The first interval whose excess exceeds 1 % of the wall's,
 // 0.01 (G H - tau0), is where shearing starts; the line through its excess and the next interval's is followed back
 // to zero excess, and that is the plug's edge. On the closed form sampled at the rows this reads y0 within 0.23 dp
-// (Bingham) and 0.36 dp (n = 0.5) at 20 across, for any y0 (PlugMeasureReadsTheClosedForm); a creeping plug whose
-// excess stays under the 1 % does not count as sheared.
+// (Bingham) and 0.36 dp (n = 0.5) at 20 across, the worst over y0 from 5 to 25 mm (tests/test_hb_poiseuille.cpp,
+// PlugMeasureReadsTheClosedForm, checks four). A creeping plug whose excess stays under the 1 % counts as rigid.
 // Why not the MPS shear rate (fluid/strain_rate.hpp), which this measure used before: the kernel fits one velocity
 // gradient over re = 2.1 dp, so across the kink at the plug's edge a particle up to re inside the plug reads its
 // sheared neighbours. With the particles' velocities held to the closed form's shear rate (a rigid plug to 10 mm:
 // the rows 2.5 and 7.5 mm from the centre 0.0005 1/s apart), that measure read a plug half width of 6.6 mm
 // (Bingham, 20 across); and a threshold at 1 % of the wall's shear rate reads the closed form itself at y0 + 4 mm
-// for n = 0.5 (the shear rate rises as (|y| - y0)^2 there). Measured in the plug branch's notes.
+// for n = 0.5 (the shear rate rises as (|y| - y0)^2 there). Figures: tests/test_hb_poiseuille.cpp.
 // unyielded_half_width is the simulation's own yield state: a particle is unyielded while its stress, lagged
 // viscosity times MPS shear rate, is below tau0 (the regularisation then holds its viscosity near the cap); the
 // value is the middle between the last row from the centre that is unyielded throughout and the next one, 0 if the
