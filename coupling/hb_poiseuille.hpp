@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <vector>
 
 #include "coupling/simulation.hpp"
 #include "fluid/strain_rate.hpp"
@@ -32,14 +34,32 @@ struct HbPoiseuille {
 struct ChannelProfileError {
   double l2 = 0.0;             // rms over the channel's fluid particles of (u - u_exact) / u_max
   double centreline = 0.0;     // (mean u of the particles nearest the centre - u_max) / u_max
-  double plug_half_width = 0;  // m: where the row-mean shear rate rises through 1 % of the wall's (interpolated)
+  double plug_half_width = 0;  // m: the rigid core of the rows' mean velocity profile (below), resolution dp
+  double unyielded_half_width = 0;  // m: the core of rows whose every particle the rheology holds unyielded (below)
   std::size_t particles = 0;
 };
 
 // The error of the fluid particles of a channel whose walls' faces are y = centre -+ H against the closed form.
-// Rows are the particles' y rounded to `row_tolerance`; the plug's half width is the distance from the centre at
-// which the rows' mean shear rate (fluid/strain_rate.hpp) first exceeds 1 % of the closed form's wall shear rate,
-// interpolated linearly between rows.
+// Rows are the particles' y rounded to dp / 8, folded about the centre.
+//
+// The plug is where the material moves rigidly, so its half width is read from the rows' mean velocities. Between
+// neighbouring rows k and k + 1 (k = 0 nearest the centre), at the interval's middle, the rate g = |u_k - u_k+1| /
+// (y_k+1 - y_k) carries the stress excess e = K g^n over the yield stress that the closed form's law gives it
+// (K g^n = G |y| - tau0 where sheared: linear in y). The first interval whose excess exceeds 1 % of the wall's,
+// 0.01 (G H - tau0), is where shearing starts; the line through its excess and the next interval's is followed back
+// to zero excess, and that is the plug's edge. On the closed form sampled at the rows this reads y0 within 0.23 dp
+// (Bingham) and 0.36 dp (n = 0.5) at 20 across, the worst over y0 from 5 to 25 mm (tests/test_hb_poiseuille.cpp,
+// PlugMeasureReadsTheClosedForm, checks four). A creeping plug whose excess stays under the 1 % counts as rigid.
+// Why not the MPS shear rate (fluid/strain_rate.hpp), which this measure used before: the kernel fits one velocity
+// gradient over re = 2.1 dp, so across the kink at the plug's edge a particle up to re inside the plug reads its
+// sheared neighbours. With the particles' velocities held to the closed form's shear rate (a rigid plug to 10 mm:
+// the rows 2.5 and 7.5 mm from the centre 0.0005 1/s apart), that measure read a plug half width of 6.6 mm
+// (Bingham, 20 across); and a threshold at 1 % of the wall's shear rate reads the closed form itself at y0 + 4 mm
+// for n = 0.5 (the shear rate rises as (|y| - y0)^2 there). Figures: tests/test_hb_poiseuille.cpp.
+// unyielded_half_width is the simulation's own yield state: a particle is unyielded while its stress, lagged
+// viscosity times MPS shear rate, is below tau0 (the regularisation then holds its viscosity near the cap); the
+// value is the middle between the last row from the centre that is unyielded throughout and the next one, 0 if the
+// central row yields. It shows what the rheology sees, smearing included; the plug is the velocity's.
 template <int D>
 ChannelProfileError channel_profile_error(const Simulation<D>& sim, const HbPoiseuille& exact, double centre) {
   const auto& P = sim.particles;
@@ -47,7 +67,12 @@ ChannelProfileError channel_profile_error(const Simulation<D>& sim, const HbPois
   ChannelProfileError e;
   double sum2 = 0.0, nearest = INFINITY, centre_sum = 0.0;
   std::size_t centre_count = 0;
-  std::map<long, std::pair<double, int>> rate_by_row;  // row (y / (dp/8) rounded) -> summed shear rate, count
+  struct Row {
+    double y = 0.0, u = 0.0;
+    int count = 0;
+    bool yielded = false;
+  };
+  std::map<long, Row> rows;  // row (|y| / (dp/8) rounded)
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     if (P.kind[i] != Kind::fluid) continue;
     const double y = P.position[i][1] - centre;
@@ -55,9 +80,12 @@ ChannelProfileError channel_profile_error(const Simulation<D>& sim, const HbPois
     sum2 += d * d;
     ++e.particles;
     nearest = std::min(nearest, std::abs(y));
-    auto& r = rate_by_row[std::lround(std::abs(y) / (0.125 * dp))];
-    r.first += shear_rate<D>(i, P, sim.neighbors(), sim.re(), sim.lattice.n0, sim.options.viscous_wall());
-    ++r.second;
+    Row& r = rows[std::lround(std::abs(y) / (0.125 * dp))];
+    r.y += std::abs(y);
+    r.u += P.velocity[i][0];
+    ++r.count;
+    const double rate = shear_rate<D>(i, P, sim.neighbors(), sim.re(), sim.lattice.n0, sim.options.viscous_wall());
+    if (P.viscosity[i] * rate >= exact.yield_stress) r.yielded = true;
   }
   for (std::size_t i = 0; i < P.real_count(); ++i)
     if (P.kind[i] == Kind::fluid && std::abs(std::abs(P.position[i][1] - centre) - nearest) < 1e-6 * dp) {
@@ -66,17 +94,32 @@ ChannelProfileError channel_profile_error(const Simulation<D>& sim, const HbPois
     }
   e.l2 = std::sqrt(sum2 / std::max<std::size_t>(e.particles, 1));
   e.centreline = (centre_sum / std::max<std::size_t>(centre_count, 1) - u_max) / u_max;
-  const double threshold = 0.01 * exact.wall_shear_rate();
-  double y_prev = 0.0, g_prev = 0.0;
-  bool first = true;
-  e.plug_half_width = exact.half_width;
-  for (const auto& [row, sum_count] : rate_by_row) {
-    const double y = row * 0.125 * dp, g = sum_count.first / sum_count.second;
-    if (g > threshold) {
-      e.plug_half_width = first ? 0.0 : y_prev + (threshold - g_prev) / (g - g_prev) * (y - y_prev);
-      break;
+
+  // Row intervals from the centre out: their middles and the stress excess K g^n their shear rate carries.
+  std::vector<double> middle, excess;
+  std::optional<Row> prev;
+  e.plug_half_width = e.unyielded_half_width = exact.half_width;
+  bool unyielded_found = false;
+  for (const auto& [key, sums] : rows) {
+    Row r = sums;
+    r.y /= r.count, r.u /= r.count;
+    if (prev) {
+      middle.push_back(0.5 * (prev->y + r.y));
+      const double rate = std::abs(prev->u - r.u) / (r.y - prev->y);
+      excess.push_back(exact.consistency * std::pow(rate, exact.flow_index));
+      if (!unyielded_found && r.yielded) e.unyielded_half_width = middle.back(), unyielded_found = true;
+    } else if (r.yielded) {
+      e.unyielded_half_width = 0.0, unyielded_found = true;
     }
-    y_prev = y, g_prev = g, first = false;
+    prev = r;
+  }
+  const double threshold = 0.01 * (exact.body_force * exact.half_width - exact.yield_stress);
+  for (std::size_t k = 0; k < excess.size(); ++k) {
+    if (excess[k] <= threshold) continue;
+    e.plug_half_width = middle[k];
+    if (k + 1 < excess.size() && excess[k + 1] > excess[k])
+      e.plug_half_width = std::max(0.0, middle[k] - excess[k] / (excess[k + 1] - excess[k]) * (middle[k + 1] - middle[k]));
+    break;
   }
   return e;
 }
