@@ -172,8 +172,9 @@ Schema method_schema() {
        {"collision_restitution", S::number("restitution coefficient of the collision model", "", 0.2, 0.0, 1.0)},
        {"initial_state", S::choice("hydrostatic compresses the water so it starts at rest under gravity; settled "
                                    "does that and then lets water at rest settle with damping for settling_time "
-                                   "(coupling/relaxation.hpp), for scenes whose water starts at rest; lattice starts "
-                                   "from the uncompressed lattice",
+                                   "(coupling/relaxation.hpp), for scenes whose water starts at rest (sediment "
+                                   "regions settle as a fluid, their rheology starting at t = 0; deformable slides are "
+                                   "held); lattice starts from the uncompressed lattice",
                                    initial_state_names.names(), std::string(to_string(InitialState::hydrostatic)))},
        {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
        {"settling_damping",

@@ -28,7 +28,8 @@ struct Relaxation {
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
 // settling goes unstable. On return the simulation is at time 0 with every fluid velocity zero.
 // held_phases: fluid particles of these phases (deformable slides) are held where they are while the water settles
-// around them, as a rigid slide is (their pressure still settles: they are put back after every step).
+// around them, as a rigid slide is (their pressure still settles: they are put back after every step). Sediment
+// that is not held settles as a fluid (Simulation::set_rheology_suspended): its rheology starts at t = 0.
 Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
                          const std::vector<std::uint8_t>& held_phases = {});
 
