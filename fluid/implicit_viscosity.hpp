@@ -18,6 +18,20 @@
 // explicit term. The step (coupling/simulation.cpp) then applies the explicit operator's pair terms at the solution
 // u~, to the fluid and, through body particles, to the bodies: momentum is then exchanged exactly, whatever the
 // solver's tolerance, and the result differs from u~ only by the solver's residual.
+//
+// Which particles are unknowns. Write the system A u~ = b, A = R + K, R = diag(rho_i), and let a fluid particle's
+// viscous number be s_i = (sum of its row's off-diagonal and wall coefficients) / rho_i = dt c (sum_fluid mu_ij W_ij
+// + sum_wall mu_i f_ij W_ij) / rho_i (viscous_row_number below): the fraction of its velocity difference that
+// viscosity relaxes in one step; the explicit term is stable for s_i <= 1 (Gershgorin), the explicit time-step limit.
+// Only the stiff particles, s_i > eps = sqrt(tolerance), are unknowns (Bingham sediment: s ~ 1e2-1e6); the others
+// (water: s ~ 1e-5 at the CFL step) take u~_i = u_i + dt a_i, which enters the stiff rows like a wall's velocity.
+// The stiff rows form a principal submatrix of A, so that system is again symmetric and strictly diagonally
+// dominant, positive definite. The error: with e = u~ - u_exact, e_i <= s_i |du| on a non-stiff row (|du| the
+// largest velocity difference), a stiff row solved against it gets e_i <= sum_j k_ij e_j / rho_i, k_ij <= s_j rho_j,
+// i.e. O(eps^2); and the step's result u* = R^-1 (b - K u~) = u_exact - R^-1 K e is O(eps^2 |du|) from the fully
+// implicit answer on every row: within the solver's tolerance. Non-stiff rows are thereby updated explicitly
+// (u* = u + dt (a + a_visc(u~))) at s_i <= eps, 1/eps inside the explicit stability limit; the stiff rows implicitly
+// as before. Momentum stays exact (the same pair terms, at u~, go both ways).
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -40,22 +54,64 @@ struct ViscousSolveReport {
   bool converged = true;
 };
 
+// The implicit couplings of fluid particle i (the row of the system above, before multiplying by dt c): calls
+// fluid(j, mu_ij W_ij) for each fluid neighbour j within re and wall(j, mu_i f_ij W_ij) for each boundary neighbour
+// under a no-slip wall (free slip: none).
+template <int D, class Fluid, class Wall>
+inline void for_each_viscous_coupling(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
+                                      const ViscousWall& wall, Fluid&& fluid, Wall&& wall_pair) {
+  const double re2 = re * re;
+  const double mu_i = P.viscosity[i];
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
+    const std::uint32_t j = *q;
+    const double r2 = distance_squared<D>(P.position[j], P.position[i]);
+    if (r2 >= re2) continue;
+    const double w = kernel_weight(std::sqrt(r2), re);
+    if (P.kind[j] == Kind::fluid) {
+      const double mu_j = P.viscosity[j];
+      const double mu_ij = mu_i == mu_j ? mu_i : 2.0 * mu_i * mu_j / (mu_i + mu_j);
+      fluid(j, mu_ij * w);
+    } else if (wall.slip == WallSlip::no_slip) {
+      const double d_j = P.wall_depth[j];
+      const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
+      wall_pair(j, mu_i * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w);
+    }
+  }
+}
+
+// s_i of fluid particle i (header): dt c (sum_fluid mu_ij W_ij + sum_wall mu_i f_ij W_ij) / rho_i, c = 2d / (lambda n0).
+template <int D>
+double viscous_row_number(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
+                          double lambda, const ViscousWall& wall, double dt) {
+  double sum = 0.0;
+  auto add = [&](std::uint32_t, double a) { sum += a; };
+  for_each_viscous_coupling<D>(i, P, nl, re, wall, add, add);
+  return dt * (2.0 * D / (lambda * n0)) * sum / P.density[i];
+}
+
 // Matrix workspace kept between steps (its arrays are reused).
 class ImplicitViscosity {
  public:
   double tolerance = 1e-8;    // relative residual
   int max_iterations = 500;
 
-  // Replaces P.velocity of every real fluid particle by the solution (above); `explicit_acceleration` holds a_i for
-  // fluid particles. Positions are not moved. Particles other than fluid keep their velocities; periodic ghosts are
-  // left for the caller to copy.
+  // Fluid particles with viscous_row_number above this are unknowns (header): sqrt(tolerance), so that the others'
+  // explicit treatment changes the step's result by O(tolerance).
+  double stiff_row_number() const { return std::sqrt(tolerance); }
+
+  // Replaces P.velocity of every real fluid particle by u~ (above): the solution on the stiff rows, u_i + dt a_i on
+  // the others; `explicit_acceleration` holds a_i for fluid particles. Positions are not moved. Particles other
+  // than fluid keep their velocities; periodic ghosts are left for the caller to copy.
   template <int D>
   ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda,
                            const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration);
 
+  std::size_t unknowns() const { return particle_of_.size(); }  // of the last solve
+
  private:
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-  std::vector<int> row_of_;        // particle -> unknown (-1: not fluid)
+  std::vector<std::uint8_t> stiff_;  // particle -> 1: an unknown
+  std::vector<int> row_of_;        // particle -> unknown (-1: not an unknown)
   std::vector<std::uint32_t> particle_of_;  // unknown -> particle
   std::vector<int> row_start_;
   Matrix matrix_;  // compressed row storage, filled in place
@@ -65,27 +121,32 @@ template <int D>
 ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList& nl, double re, double n0,
                                             double lambda, const ViscousWall& wall, double dt,
                                             const std::vector<Vec<D>>& explicit_acceleration) {
-  // Unknowns: the real fluid particles. A periodic ghost (fluid/periodic.hpp) is its source's unknown.
+  // Unknowns: the stiff real fluid particles (header). A periodic ghost (fluid/periodic.hpp) is its source's unknown.
   const std::size_t n = P.real_count();
+  const double stiff = stiff_row_number();
+  stiff_.assign(n, 0);
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] == Kind::fluid) stiff_[i] = viscous_row_number<D>(i, P, nl, re, n0, lambda, wall, dt) > stiff;
+  });
   row_of_.assign(n, -1);
   particle_of_.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (P.kind[i] == Kind::fluid) {
+    if (stiff_[i]) {
       row_of_[i] = static_cast<int>(particle_of_.size());
       particle_of_.push_back(static_cast<std::uint32_t>(i));
     }
   const std::size_t rows = particle_of_.size();
   ViscousSolveReport report;
-  if (rows == 0) return report;
-  const double re2 = re * re, c = 2.0 * D / (lambda * n0);
+  // u~ of the particles that are not unknowns: u + dt a.
+  auto guess = [&](std::size_t i) -> Vec<D> { return P.velocity[i] + dt * explicit_acceleration[i]; };
+  const double c = 2.0 * D / (lambda * n0);
 
-  // Row sizes: the diagonal and every fluid neighbour within re.
+  // Row sizes: the diagonal and every neighbouring unknown within re.
   row_start_.assign(rows + 1, 0);
   parallel_for(rows, [&](std::size_t r) {
-    const std::size_t i = particle_of_[r];
     int count = 1;
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-      if (P.kind[*q] == Kind::fluid && distance_squared<D>(P.position[*q], P.position[i]) < re2) ++count;
+    auto fluid = [&](std::uint32_t j, double) { count += row_of_[P.real_index(j)] >= 0; };
+    for_each_viscous_coupling<D>(particle_of_[r], P, nl, re, wall, fluid, [](std::uint32_t, double) {});
     row_start_[r + 1] = count;
   });
   for (std::size_t r = 0; r < rows; ++r) row_start_[r + 1] += row_start_[r];
@@ -97,61 +158,69 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
   Eigen::Matrix<double, Eigen::Dynamic, D> rhs(rows, D), u(rows, D);
 
   // Rows: off-diagonals -dt c mu_ij W_ij, the diagonal rho_i + dt c (sum mu_ij W_ij + sum_wall mu_i f_ij W_ij),
-  // the right-hand side rho_i (u_i + dt a_i) + dt c sum_wall mu_i f_ij W_ij u_b,j. Columns sorted within a row.
+  // the right-hand side rho_i (u_i + dt a_i) + dt c sum_wall mu_i f_ij W_ij u_b,j, and dt c mu_ij W_ij u~_j for a
+  // fluid neighbour that is not an unknown. Columns sorted within a row (insertion: rows are short and nearly sorted).
   parallel_for(rows, [&](std::size_t r) {
     const std::size_t i = particle_of_[r];
-    const double mu_i = P.viscosity[i];
-    Vec<D> b = P.density[i] * (P.velocity[i] + dt * explicit_acceleration[i]);
+    Vec<D> b = P.density[i] * guess(i);
     double diagonal = P.density[i];
-    std::vector<std::pair<int, double>> entries;
-    entries.reserve(row_start_[r + 1] - row_start_[r]);
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
-      const std::uint32_t j = *q;
-      const double r2 = distance_squared<D>(P.position[j], P.position[i]);
-      if (r2 >= re2) continue;
-      const double w = kernel_weight(std::sqrt(r2), re);
-      if (P.kind[j] == Kind::fluid) {
-        const double mu_j = P.viscosity[j];
-        const double mu_ij = mu_i == mu_j ? mu_i : 2.0 * mu_i * mu_j / (mu_i + mu_j);
-        const double a = dt * c * mu_ij * w;
-        diagonal += a;
-        entries.emplace_back(row_of_[P.real_index(j)], -a);
-      } else if (wall.slip == WallSlip::no_slip) {
-        const double d_j = P.wall_depth[j];
-        const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-        const double a = dt * c * mu_i * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w;
-        diagonal += a;
-        b += a * P.velocity[j];
+    const int first = row_start_[r];
+    int k = first;
+    auto fluid = [&](std::uint32_t j, double coupling) {
+      const double a = dt * c * coupling;
+      diagonal += a;
+      const std::size_t rj = P.real_index(j);
+      const int col = row_of_[rj];
+      if (col < 0) {
+        b += a * guess(rj);
+        return;
       }
+      int at = k++;
+      for (; at > first && column[at - 1] > col; --at) {
+        column[at] = column[at - 1];
+        value[at] = value[at - 1];
+      }
+      column[at] = col;
+      value[at] = -a;
+    };
+    auto wall_pair = [&](std::uint32_t j, double coupling) {
+      const double a = dt * c * coupling;
+      diagonal += a;
+      b += a * P.velocity[j];
+    };
+    for_each_viscous_coupling<D>(i, P, nl, re, wall, fluid, wall_pair);
+    int at = k++;
+    for (; at > first && column[at - 1] > static_cast<int>(r); --at) {
+      column[at] = column[at - 1];
+      value[at] = value[at - 1];
     }
-    entries.emplace_back(static_cast<int>(r), diagonal);
-    std::sort(entries.begin(), entries.end());
-    int k = row_start_[r];
-    for (const auto& [col, v] : entries) {
-      column[k] = col;
-      value[k] = v;
-      ++k;
-    }
+    column[at] = static_cast<int>(r);
+    value[at] = diagonal;
     rhs.row(r) = b.transpose();
-    u.row(r) = (P.velocity[i] + dt * explicit_acceleration[i]).transpose();
+    u.row(r) = guess(i).transpose();
   });
 
-  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
-  cg.setTolerance(tolerance);
-  cg.setMaxIterations(max_iterations);
-  cg.compute(matrix_);
-  for (int d = 0; d < D; ++d) {
-    if (rhs.col(d).squaredNorm() == 0.0) {
-      u.col(d).setZero();
-      continue;
+  if (rows != 0) {
+    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
+    cg.setTolerance(tolerance);
+    cg.setMaxIterations(max_iterations);
+    cg.compute(matrix_);
+    for (int d = 0; d < D; ++d) {
+      if (rhs.col(d).squaredNorm() == 0.0) {
+        u.col(d).setZero();
+        continue;
+      }
+      Eigen::VectorXd x = cg.solveWithGuess(rhs.col(d), u.col(d));
+      u.col(d) = x;
+      report.iterations = std::max(report.iterations, static_cast<int>(cg.iterations()));
+      report.residual = std::max(report.residual, cg.error());
+      report.converged = report.converged && cg.info() == Eigen::Success;
     }
-    Eigen::VectorXd x = cg.solveWithGuess(rhs.col(d), u.col(d));
-    u.col(d) = x;
-    report.iterations = std::max(report.iterations, static_cast<int>(cg.iterations()));
-    report.residual = std::max(report.residual, cg.error());
-    report.converged = report.converged && cg.info() == Eigen::Success;
   }
-  parallel_for(rows, [&](std::size_t r) { P.velocity[particle_of_[r]] = u.row(r).transpose(); });
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    P.velocity[i] = row_of_[i] >= 0 ? Vec<D>(u.row(row_of_[i]).transpose()) : guess(i);
+  });
   return report;
 }
 
