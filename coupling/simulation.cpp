@@ -251,15 +251,10 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     });
     start_velocity_.assign(P.velocity.begin(), P.velocity.end());
     implicit_viscosity_.tolerance = options.implicit_tolerance;
+    // u~ (ghosts included) and, in scratch_, the viscous acceleration at u~ of every fluid particle.
     last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(),
-                                                       dt, P.acceleration);
+                                                       dt, P.acceleration, scratch_);
     record(last_viscous_solve_);
-    copy_to_ghosts(P, P.velocity);  // u~ beyond the period's ends
-    parallel_for(n, [&](std::size_t i) {
-      scratch_[i] = P.kind[i] == Kind::fluid
-                        ? viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall())
-                        : Vec<D>::Zero();
-    });
   } else {
     parallel_for(n, [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) return;

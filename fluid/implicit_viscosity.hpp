@@ -43,6 +43,7 @@
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
+#include "fluid/periodic.hpp"
 #include "fluid/strain_rate.hpp"
 #include "fluid/viscosity.hpp"
 
@@ -79,14 +80,26 @@ inline void for_each_viscous_coupling(std::size_t i, const Particles<D>& P, cons
   }
 }
 
-// s_i of fluid particle i (header): dt c (sum_fluid mu_ij W_ij + sum_wall mu_i f_ij W_ij) / rho_i, c = 2d / (lambda n0).
+// One walk over fluid particle i's neighbours: its viscous row number s_i (header), dt c (sum_fluid mu_ij W_ij +
+// sum_wall mu_i f_ij W_ij) / rho_i, c = 2d / (lambda n0), and its explicit viscous acceleration at the present
+// velocities, the same sum as viscous_acceleration (fluid/viscosity.hpp) in the same order, hence the same value.
 template <int D>
-double viscous_row_number(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
+struct ViscousRow {
+  double number = 0.0;
+  Vec<D> acceleration = Vec<D>::Zero();
+};
+
+template <int D>
+ViscousRow<D> viscous_row(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
                           double lambda, const ViscousWall& wall, double dt) {
-  double sum = 0.0;
-  auto add = [&](std::uint32_t, double a) { sum += a; };
+  double coupling_sum = 0.0;
+  Vec<D> sum = Vec<D>::Zero();
+  auto add = [&](std::uint32_t j, double coupling) {
+    coupling_sum += coupling;
+    sum += coupling * (P.velocity[j] - P.velocity[i]);
+  };
   for_each_viscous_coupling<D>(i, P, nl, re, wall, add, add);
-  return dt * (2.0 * D / (lambda * n0)) * sum / P.density[i];
+  return {dt * (2.0 * D / (lambda * n0)) * coupling_sum / P.density[i], viscous_scale<D>(i, P, n0, lambda) * sum};
 }
 
 // Matrix workspace kept between steps (its arrays are reused).
@@ -99,18 +112,23 @@ class ImplicitViscosity {
   // explicit treatment changes the step's result by O(tolerance).
   double stiff_row_number() const { return std::sqrt(tolerance); }
 
-  // Replaces P.velocity of every real fluid particle by u~ (above): the solution on the stiff rows, u_i + dt a_i on
-  // the others; `explicit_acceleration` holds a_i for fluid particles. Positions are not moved. Particles other
-  // than fluid keep their velocities; periodic ghosts are left for the caller to copy.
+  // Replaces P.velocity of every fluid particle, periodic ghosts included, by u~ (above): the solution on the stiff
+  // rows, u_i + dt a_i on the others; `explicit_acceleration` holds a_i for real fluid particles. Fills
+  // `viscous_acceleration` (resized to P.size() if smaller) with the explicit viscous acceleration at u~ for every
+  // real fluid particle, equal to viscous_acceleration (fluid/viscosity.hpp) evaluated after the solve: computed in
+  // the walk that classifies the rows, and again after the solve only where a stiff particle is a neighbour.
+  // Positions are not moved; particles other than fluid keep their velocities.
   template <int D>
   ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda,
-                           const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration);
+                           const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration,
+                           std::vector<Vec<D>>& viscous_acceleration);
 
   std::size_t unknowns() const { return particle_of_.size(); }  // of the last solve
 
  private:
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   std::vector<std::uint8_t> stiff_;  // particle -> 1: an unknown
+  std::vector<std::uint8_t> near_stiff_;  // particle -> 1: an unknown or a fluid neighbour of one
   std::vector<int> row_of_;        // particle -> unknown (-1: not an unknown)
   std::vector<std::uint32_t> particle_of_;  // unknown -> particle
   std::vector<int> row_start_;
@@ -120,13 +138,24 @@ class ImplicitViscosity {
 template <int D>
 ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList& nl, double re, double n0,
                                             double lambda, const ViscousWall& wall, double dt,
-                                            const std::vector<Vec<D>>& explicit_acceleration) {
-  // Unknowns: the stiff real fluid particles (header). A periodic ghost (fluid/periodic.hpp) is its source's unknown.
+                                            const std::vector<Vec<D>>& explicit_acceleration,
+                                            std::vector<Vec<D>>& viscous_acceleration) {
   const std::size_t n = P.real_count();
+  if (viscous_acceleration.size() < P.size()) viscous_acceleration.resize(P.size(), Vec<D>::Zero());
+  // Every fluid particle starts at u + dt a, the u~ of those that are not unknowns.
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] == Kind::fluid) P.velocity[i] += dt * explicit_acceleration[i];
+  });
+  copy_to_ghosts(P, P.velocity);
+  // Unknowns: the stiff real fluid particles (header). A periodic ghost (fluid/periodic.hpp) is its source's unknown.
+  // The same walk gives the viscous acceleration at u + dt a, which is that at u~ wherever no unknown is near.
   const double stiff = stiff_row_number();
   stiff_.assign(n, 0);
   parallel_for(n, [&](std::size_t i) {
-    if (P.kind[i] == Kind::fluid) stiff_[i] = viscous_row_number<D>(i, P, nl, re, n0, lambda, wall, dt) > stiff;
+    if (P.kind[i] != Kind::fluid) return;
+    const ViscousRow<D> row = viscous_row<D>(i, P, nl, re, n0, lambda, wall, dt);
+    stiff_[i] = row.number > stiff;
+    viscous_acceleration[i] = row.acceleration;
   });
   row_of_.assign(n, -1);
   particle_of_.clear();
@@ -137,8 +166,7 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
     }
   const std::size_t rows = particle_of_.size();
   ViscousSolveReport report;
-  // u~ of the particles that are not unknowns: u + dt a.
-  auto guess = [&](std::size_t i) -> Vec<D> { return P.velocity[i] + dt * explicit_acceleration[i]; };
+  if (rows == 0) return report;
   const double c = 2.0 * D / (lambda * n0);
 
   // Row sizes: the diagonal and every neighbouring unknown within re.
@@ -162,17 +190,16 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
   // fluid neighbour that is not an unknown. Columns sorted within a row (insertion: rows are short and nearly sorted).
   parallel_for(rows, [&](std::size_t r) {
     const std::size_t i = particle_of_[r];
-    Vec<D> b = P.density[i] * guess(i);
+    Vec<D> b = P.density[i] * P.velocity[i];
     double diagonal = P.density[i];
     const int first = row_start_[r];
     int k = first;
     auto fluid = [&](std::uint32_t j, double coupling) {
       const double a = dt * c * coupling;
       diagonal += a;
-      const std::size_t rj = P.real_index(j);
-      const int col = row_of_[rj];
+      const int col = row_of_[P.real_index(j)];
       if (col < 0) {
-        b += a * guess(rj);
+        b += a * P.velocity[j];
         return;
       }
       int at = k++;
@@ -197,29 +224,37 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
     column[at] = static_cast<int>(r);
     value[at] = diagonal;
     rhs.row(r) = b.transpose();
-    u.row(r) = guess(i).transpose();
+    u.row(r) = P.velocity[i].transpose();
   });
 
-  if (rows != 0) {
-    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
-    cg.setTolerance(tolerance);
-    cg.setMaxIterations(max_iterations);
-    cg.compute(matrix_);
-    for (int d = 0; d < D; ++d) {
-      if (rhs.col(d).squaredNorm() == 0.0) {
-        u.col(d).setZero();
-        continue;
-      }
-      Eigen::VectorXd x = cg.solveWithGuess(rhs.col(d), u.col(d));
-      u.col(d) = x;
-      report.iterations = std::max(report.iterations, static_cast<int>(cg.iterations()));
-      report.residual = std::max(report.residual, cg.error());
-      report.converged = report.converged && cg.info() == Eigen::Success;
+  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
+  cg.setTolerance(tolerance);
+  cg.setMaxIterations(max_iterations);
+  cg.compute(matrix_);
+  for (int d = 0; d < D; ++d) {
+    if (rhs.col(d).squaredNorm() == 0.0) {
+      u.col(d).setZero();
+      continue;
     }
+    Eigen::VectorXd x = cg.solveWithGuess(rhs.col(d), u.col(d));
+    u.col(d) = x;
+    report.iterations = std::max(report.iterations, static_cast<int>(cg.iterations()));
+    report.residual = std::max(report.residual, cg.error());
+    report.converged = report.converged && cg.info() == Eigen::Success;
+  }
+  parallel_for(rows, [&](std::size_t r) { P.velocity[particle_of_[r]] = u.row(r).transpose(); });
+  copy_to_ghosts(P, P.velocity);
+
+  // The viscous acceleration again where u~ changed: the unknowns and every fluid particle in their lists (a
+  // superset of the neighbours within re; serial, for it writes to neighbours).
+  near_stiff_.assign(n, 0);
+  for (const std::uint32_t i : particle_of_) {
+    near_stiff_[i] = 1;
+    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
+      if (P.kind[*q] == Kind::fluid) near_stiff_[P.real_index(*q)] = 1;
   }
   parallel_for(n, [&](std::size_t i) {
-    if (P.kind[i] != Kind::fluid) return;
-    P.velocity[i] = row_of_[i] >= 0 ? Vec<D>(u.row(row_of_[i]).transpose()) : guess(i);
+    if (near_stiff_[i]) viscous_acceleration[i] = viscous_row<D>(i, P, nl, re, n0, lambda, wall, dt).acceleration;
   });
   return report;
 }
