@@ -60,6 +60,7 @@ void Simulation<D>::initialise() {
   }
   grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
   scratch_.assign(particles.size(), Vec<D>::Zero());
+  predictor_acceleration_.assign(particles.size(), Vec<D>::Zero());
   if constexpr (D == 2) {
     if (bodies_) bodies_->place_particles(particles, time_);
   }
@@ -107,6 +108,7 @@ void Simulation<D>::update_neighbors(bool force) {
   if (options.periodic_x) {
     add_ghosts(particles, *options.periodic_x, list_radius());
     scratch_.resize(particles.size(), Vec<D>::Zero());
+    predictor_acceleration_.resize(particles.size(), Vec<D>::Zero());
   }
   grid_.bin(x);
   build_neighbor_list(grid_, x, list_radius(), list_, particles.real_count());
@@ -283,19 +285,15 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
         a += artificial_viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, options.artificial_viscosity,
                                                 options.sound_speed, options.dp);
       P.acceleration[i] = a;
-      scratch_[i] = a - pressure_gradient<D>(gradient, i, P, list_, r_e, lattice.n0, lattice.kappa) / P.density[i];
+      predictor_acceleration_[i] =
+          a - pressure_gradient<D>(gradient, i, P, list_, r_e, lattice.n0, lattice.kappa) / P.density[i];
     });
     start_velocity_.assign(P.velocity.begin(), P.velocity.end());
     implicit_viscosity_.tolerance = options.implicit_tolerance;
+    // u~ (ghosts included) and, in scratch_, the viscous acceleration at u~ of every fluid particle.
     last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(),
-                                                       dt, scratch_);
+                                                       dt, predictor_acceleration_, scratch_);
     record(last_viscous_solve_);
-    copy_to_ghosts(P, P.velocity);  // u~ beyond the period's ends
-    parallel_for(n, [&](std::size_t i) {
-      scratch_[i] = P.kind[i] == Kind::fluid
-                        ? viscous_acceleration<D>(i, P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall())
-                        : Vec<D>::Zero();
-    });
   } else {
     parallel_for(n, [&](std::size_t i) {
       if (P.kind[i] != Kind::fluid) return;

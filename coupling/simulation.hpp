@@ -131,6 +131,7 @@ class Simulation {
   NeighborList list_;
   std::vector<Vec<D>> position_at_build_;
   std::vector<Vec<D>> scratch_;
+  std::vector<Vec<D>> predictor_acceleration_;  // semi-implicit viscous stage: a - grad p / rho given to the solve
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
   bool rheology_ = false;  // some phase is non-Newtonian

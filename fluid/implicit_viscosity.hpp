@@ -19,6 +19,20 @@
 // explicit term. The step (coupling/simulation.cpp) then applies the explicit operator's pair terms at the solution
 // u~, to the fluid and, through body particles, to the bodies: momentum is then exchanged exactly, whatever the
 // solver's tolerance, and the result differs from u~ only by the solver's residual.
+//
+// Which particles are unknowns. Write the system A u~ = b, A = R + K, R = diag(rho_i), and let a fluid particle's
+// viscous number be s_i = (sum of its row's off-diagonal and wall coefficients) / rho_i = dt c (sum_fluid mu_ij W_ij
+// + sum_wall mu_i f_ij W_ij) / rho_i (viscous_row_number below): the fraction of its velocity difference that
+// viscosity relaxes in one step; the explicit term is stable for s_i <= 1 (Gershgorin), the explicit time-step limit.
+// Only the stiff particles, s_i > eps = sqrt(tolerance), are unknowns (Bingham sediment: s ~ 1e2-1e6); the others
+// (water: s ~ 1e-5 at the CFL step) take u~_i = u_i + dt a_i, which enters the stiff rows like a wall's velocity.
+// The stiff rows form a principal submatrix of A, so that system is again symmetric and strictly diagonally
+// dominant, positive definite. The error: with e = u~ - u_exact, e_i <= s_i |du| on a non-stiff row (|du| the
+// largest velocity difference), a stiff row solved against it gets e_i <= sum_j k_ij e_j / rho_i, k_ij <= s_j rho_j,
+// i.e. O(eps^2); and the step's result u* = R^-1 (b - K u~) = u_exact - R^-1 K e is O(eps^2 |du|) from the fully
+// implicit answer on every row: within the solver's tolerance. Non-stiff rows are thereby updated explicitly
+// (u* = u + dt (a + a_visc(u~))) at s_i <= eps, 1/eps inside the explicit stability limit; the stiff rows implicitly
+// as before. Momentum stays exact (the same pair terms, at u~, go both ways).
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -30,6 +44,7 @@
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
+#include "fluid/periodic.hpp"
 #include "fluid/strain_rate.hpp"
 #include "fluid/viscosity.hpp"
 
@@ -41,22 +56,83 @@ struct ViscousSolveReport {
   bool converged = true;
 };
 
+// The implicit couplings of fluid particle i (the row of the system above, before multiplying by dt c): calls
+// fluid(j, mu_ij W_ij) for each fluid neighbour j within re and wall(j, mu_i f_ij W_ij) for each boundary neighbour
+// under a no-slip wall (free slip: none).
+template <int D, class Fluid, class Wall>
+inline void for_each_viscous_coupling(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
+                                      const ViscousWall& wall, Fluid&& fluid, Wall&& wall_pair) {
+  const double re2 = re * re;
+  const double mu_i = P.viscosity[i];
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
+    const std::uint32_t j = *q;
+    const double r2 = distance_squared<D>(P.position[j], P.position[i]);
+    if (r2 >= re2) continue;
+    const double w = kernel_weight(std::sqrt(r2), re);
+    if (P.kind[j] == Kind::fluid) {
+      const double mu_j = P.viscosity[j];
+      const double mu_ij = mu_i == mu_j ? mu_i : 2.0 * mu_i * mu_j / (mu_i + mu_j);
+      fluid(j, mu_ij * w);
+    } else if (wall.slip == WallSlip::no_slip) {
+      const double d_j = P.wall_depth[j];
+      const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
+      // The wall viscosity s_i mu_i (Particles::wall_fraction: 1 at a no-slip wall, below 1 where a Coulomb basal
+      // friction lets the particle slide), as in viscous_pair_term.
+      wall_pair(j, mu_i * P.wall_fraction[i] * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w);
+    }
+  }
+}
+
+// One walk over fluid particle i's neighbours: its viscous row number s_i (header), dt c (sum_fluid mu_ij W_ij +
+// sum_wall mu_i f_ij W_ij) / rho_i, c = 2d / (lambda n0), and its explicit viscous acceleration at the present
+// velocities, the same sum as viscous_acceleration (fluid/viscosity.hpp) in the same order, hence the same value.
+template <int D>
+struct ViscousRow {
+  double number = 0.0;
+  Vec<D> acceleration = Vec<D>::Zero();
+};
+
+template <int D>
+ViscousRow<D> viscous_row(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
+                          double lambda, const ViscousWall& wall, double dt) {
+  double coupling_sum = 0.0;
+  Vec<D> sum = Vec<D>::Zero();
+  auto add = [&](std::uint32_t j, double coupling) {
+    coupling_sum += coupling;
+    sum += coupling * (P.velocity[j] - P.velocity[i]);
+  };
+  for_each_viscous_coupling<D>(i, P, nl, re, wall, add, add);
+  return {dt * (2.0 * D / (lambda * n0)) * coupling_sum / P.density[i], viscous_scale<D>(i, P, n0, lambda) * sum};
+}
+
 // Matrix workspace kept between steps (its arrays are reused).
 class ImplicitViscosity {
  public:
   double tolerance = 1e-8;    // relative residual
   int max_iterations = 500;
 
-  // Replaces P.velocity of every real fluid particle by the solution (above); `explicit_acceleration` holds a_i for
-  // fluid particles. Positions are not moved. Particles other than fluid keep their velocities; periodic ghosts are
-  // left for the caller to copy.
+  // Fluid particles with viscous_row_number above this are unknowns (header): sqrt(tolerance), so that the others'
+  // explicit treatment changes the step's result by O(tolerance).
+  double stiff_row_number() const { return std::sqrt(tolerance); }
+
+  // Replaces P.velocity of every fluid particle, periodic ghosts included, by u~ (above): the solution on the stiff
+  // rows, u_i + dt a_i on the others; `explicit_acceleration` holds a_i for real fluid particles. Fills
+  // `viscous_acceleration` (resized to P.size() if smaller) with the explicit viscous acceleration at u~ for every
+  // real fluid particle, equal to viscous_acceleration (fluid/viscosity.hpp) evaluated after the solve: computed in
+  // the walk that classifies the rows, and again after the solve only where a stiff particle is a neighbour.
+  // Positions are not moved; particles other than fluid keep their velocities.
   template <int D>
   ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda,
-                           const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration);
+                           const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration,
+                           std::vector<Vec<D>>& viscous_acceleration);
+
+  std::size_t unknowns() const { return particle_of_.size(); }  // of the last solve
 
  private:
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-  std::vector<int> row_of_;        // particle -> unknown (-1: not fluid)
+  std::vector<std::uint8_t> stiff_;  // particle -> 1: an unknown
+  std::vector<std::uint8_t> near_stiff_;  // particle -> 1: an unknown or a fluid neighbour of one
+  std::vector<int> row_of_;        // particle -> unknown (-1: not an unknown)
   std::vector<std::uint32_t> particle_of_;  // unknown -> particle
   std::vector<int> row_start_;
   Matrix matrix_;  // compressed row storage, filled in place
@@ -65,28 +141,43 @@ class ImplicitViscosity {
 template <int D>
 ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList& nl, double re, double n0,
                                             double lambda, const ViscousWall& wall, double dt,
-                                            const std::vector<Vec<D>>& explicit_acceleration) {
-  // Unknowns: the real fluid particles. A periodic ghost (fluid/periodic.hpp) is its source's unknown.
+                                            const std::vector<Vec<D>>& explicit_acceleration,
+                                            std::vector<Vec<D>>& viscous_acceleration) {
   const std::size_t n = P.real_count();
+  if (viscous_acceleration.size() < P.size()) viscous_acceleration.resize(P.size(), Vec<D>::Zero());
+  // Every fluid particle starts at u + dt a, the u~ of those that are not unknowns.
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] == Kind::fluid) P.velocity[i] += dt * explicit_acceleration[i];
+  });
+  copy_to_ghosts(P, P.velocity);
+  // Unknowns: the stiff real fluid particles (header). A periodic ghost (fluid/periodic.hpp) is its source's unknown.
+  // The same walk gives the viscous acceleration at u + dt a, which is that at u~ wherever no unknown is near.
+  const double stiff = stiff_row_number();
+  stiff_.assign(n, 0);
+  parallel_for(n, [&](std::size_t i) {
+    if (P.kind[i] != Kind::fluid) return;
+    const ViscousRow<D> row = viscous_row<D>(i, P, nl, re, n0, lambda, wall, dt);
+    stiff_[i] = row.number > stiff;
+    viscous_acceleration[i] = row.acceleration;
+  });
   row_of_.assign(n, -1);
   particle_of_.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (P.kind[i] == Kind::fluid) {
+    if (stiff_[i]) {
       row_of_[i] = static_cast<int>(particle_of_.size());
       particle_of_.push_back(static_cast<std::uint32_t>(i));
     }
   const std::size_t rows = particle_of_.size();
   ViscousSolveReport report;
   if (rows == 0) return report;
-  const double re2 = re * re, c = 2.0 * D / (lambda * n0);
+  const double c = 2.0 * D / (lambda * n0);
 
-  // Row sizes: the diagonal and every fluid neighbour within re.
+  // Row sizes: the diagonal and every neighbouring unknown within re.
   row_start_.assign(rows + 1, 0);
   parallel_for(rows, [&](std::size_t r) {
-    const std::size_t i = particle_of_[r];
     int count = 1;
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-      if (P.kind[*q] == Kind::fluid && distance_squared<D>(P.position[*q], P.position[i]) < re2) ++count;
+    auto fluid = [&](std::uint32_t j, double) { count += row_of_[P.real_index(j)] >= 0; };
+    for_each_viscous_coupling<D>(particle_of_[r], P, nl, re, wall, fluid, [](std::uint32_t, double) {});
     row_start_[r + 1] = count;
   });
   for (std::size_t r = 0; r < rows; ++r) row_start_[r + 1] += row_start_[r];
@@ -98,43 +189,45 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
   Eigen::Matrix<double, Eigen::Dynamic, D> rhs(rows, D), u(rows, D);
 
   // Rows: off-diagonals -dt c mu_ij W_ij, the diagonal rho_i + dt c (sum mu_ij W_ij + sum_wall mu_i f_ij W_ij),
-  // the right-hand side rho_i (u_i + dt a_i) + dt c sum_wall mu_i f_ij W_ij u_b,j. Columns sorted within a row.
+  // the right-hand side rho_i (u_i + dt a_i) + dt c sum_wall mu_i f_ij W_ij u_b,j, and dt c mu_ij W_ij u~_j for a
+  // fluid neighbour that is not an unknown. Columns sorted within a row (insertion: rows are short and nearly sorted).
   parallel_for(rows, [&](std::size_t r) {
     const std::size_t i = particle_of_[r];
-    const double mu_i = P.viscosity[i];
-    Vec<D> b = P.density[i] * (P.velocity[i] + dt * explicit_acceleration[i]);
+    Vec<D> b = P.density[i] * P.velocity[i];
     double diagonal = P.density[i];
-    std::vector<std::pair<int, double>> entries;
-    entries.reserve(row_start_[r + 1] - row_start_[r]);
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
-      const std::uint32_t j = *q;
-      const double r2 = distance_squared<D>(P.position[j], P.position[i]);
-      if (r2 >= re2) continue;
-      const double w = kernel_weight(std::sqrt(r2), re);
-      if (P.kind[j] == Kind::fluid) {
-        const double mu_j = P.viscosity[j];
-        const double mu_ij = mu_i == mu_j ? mu_i : 2.0 * mu_i * mu_j / (mu_i + mu_j);
-        const double a = dt * c * mu_ij * w;
-        diagonal += a;
-        entries.emplace_back(row_of_[P.real_index(j)], -a);
-      } else if (wall.slip == WallSlip::no_slip) {
-        const double d_j = P.wall_depth[j];
-        const double d_i = P.wall_normal[j].dot(P.position[i] - P.position[j]) - d_j;
-        const double a = dt * c * mu_i * P.wall_fraction[i] * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w;
-        diagonal += a;
+    const int first = row_start_[r];
+    int k = first;
+    auto fluid = [&](std::uint32_t j, double coupling) {
+      const double a = dt * c * coupling;
+      diagonal += a;
+      const int col = row_of_[P.real_index(j)];
+      if (col < 0) {
         b += a * P.velocity[j];
+        return;
       }
+      int at = k++;
+      for (; at > first && column[at - 1] > col; --at) {
+        column[at] = column[at - 1];
+        value[at] = value[at - 1];
+      }
+      column[at] = col;
+      value[at] = -a;
+    };
+    auto wall_pair = [&](std::uint32_t j, double coupling) {
+      const double a = dt * c * coupling;
+      diagonal += a;
+      b += a * P.velocity[j];
+    };
+    for_each_viscous_coupling<D>(i, P, nl, re, wall, fluid, wall_pair);
+    int at = k++;
+    for (; at > first && column[at - 1] > static_cast<int>(r); --at) {
+      column[at] = column[at - 1];
+      value[at] = value[at - 1];
     }
-    entries.emplace_back(static_cast<int>(r), diagonal);
-    std::sort(entries.begin(), entries.end());
-    int k = row_start_[r];
-    for (const auto& [col, v] : entries) {
-      column[k] = col;
-      value[k] = v;
-      ++k;
-    }
+    column[at] = static_cast<int>(r);
+    value[at] = diagonal;
     rhs.row(r) = b.transpose();
-    u.row(r) = (P.velocity[i] + dt * explicit_acceleration[i]).transpose();
+    u.row(r) = P.velocity[i].transpose();
   });
 
   Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
@@ -153,6 +246,19 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
     report.converged = report.converged && cg.info() == Eigen::Success;
   }
   parallel_for(rows, [&](std::size_t r) { P.velocity[particle_of_[r]] = u.row(r).transpose(); });
+  copy_to_ghosts(P, P.velocity);
+
+  // The viscous acceleration again where u~ changed: the unknowns and every fluid particle in their lists (a
+  // superset of the neighbours within re; serial, for it writes to neighbours).
+  near_stiff_.assign(n, 0);
+  for (const std::uint32_t i : particle_of_) {
+    near_stiff_[i] = 1;
+    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
+      if (P.kind[*q] == Kind::fluid) near_stiff_[P.real_index(*q)] = 1;
+  }
+  parallel_for(n, [&](std::size_t i) {
+    if (near_stiff_[i]) viscous_acceleration[i] = viscous_row<D>(i, P, nl, re, n0, lambda, wall, dt).acceleration;
+  });
   return report;
 }
 
