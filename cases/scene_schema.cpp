@@ -187,7 +187,9 @@ Schema method_schema() {
                   "implicit when some phase or deformable slide is non-Newtonian, explicit otherwise",
                   viscous_scheme_choice_names.names(), "auto")},
        {"implicit_tolerance",
-        S::number("semi-implicit viscous solve: relative residual", "", 1.0e-8, 0.0, 1.0, true, true)}},
+        S::number("semi-implicit viscous solve: relative residual; particles whose viscous step number is below its "
+                  "square root are taken explicitly (fluid/implicit_viscosity.hpp)",
+                  "", 1.0e-8, 0.0, 1.0, true, true)}},
       false);
 }
 
