@@ -284,7 +284,7 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
 }
 
 // The yield criterion at rest, an infinite-slope estimate: the slide rests on the wall face its outline lies along
-// (the steepest such face); a layer of its largest thickness normal to that face, of buoyant density (rho_s - rho_w
+// (the steepest such face, theta its angle to the plane normal to gravity, whichever way gravity points); a layer of its largest thickness normal to that face, of buoyant density (rho_s - rho_w
 // below the still-water level), has the basal shear stress tau = rho' g h sin(theta); it holds tau_y
 // (Herschel-Bulkley), c + rho' g h cos(theta) tan(phi) (Mohr-Coulomb), mu_s rho' g h cos(theta) (mu(I)), nothing
 // (Newtonian); with a basal friction mu_b the wall holds mu_b rho' g h cos(theta) at its base.
@@ -294,6 +294,7 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
     if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
   rep.mass_particles = rep.particles * rep.density * b.dp * b.dp;
   const double g = b.sim->options.gravity.norm();
+  const Vec<2> down = g > 0.0 ? Vec<2>(b.sim->options.gravity / g) : Vec<2>(0.0, -1.0);
   Vec<2> tangent = Vec<2>::Zero(), normal = Vec<2>::Zero();
   double steepest = -1.0;
   for (const auto& f : b.faces) {
@@ -302,7 +303,7 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
     for (const auto& v : slide.outline) touching += std::abs(signed_face_distance({f}, from_rigid(v))) < 0.5 * b.dp;
     if (touching < 2) continue;
     const Vec<2> t = (f.b - f.a).normalized();
-    const double steep = std::abs(t[1]);
+    const double steep = std::abs(t.dot(down));  // sin theta
     if (steep > steepest) steepest = steep, tangent = t, normal = f.inward;
   }
   const Rheology rheology = b.phases.phases[slide.phase].rheology;
