@@ -163,10 +163,26 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
       if (cap_count[b] > 0) (*body_shift)[b] = cap_shift_sum[b] / cap_count[b];
   }
   // Boundary particles: the shift of the horizontally nearest run that spans their height (within re
-  // horizontally); above a run's top they take its top shift, below its bottom none.
+  // horizontally); above a run's top they take its top shift. One of an upward-facing face (normal within 60 degrees
+  // of up) in a run's own column below its bottom (the floor, or a step the run stands on) is that run's support
+  // and keeps its place: each run is compressed up from its support, so the gap between them is already the
+  // compressed one. Why not the next run that spans that height: beside a convex corner (a step, a body's bottom
+  // corner) that is the deeper run beside the corner, compressed more, and the step's top rows would drop away from
+  // the water on them (n 0.94 n0 there, zero pressure, and the corner collapsed within 0.1 s; measured with a 0.2 m
+  // step in 0.5 m of water, square lattice). A side face's particles do follow the run beside them.
+  auto supports_a_run = [&](std::size_t i) {
+    const Vec<D>& x = P.position[i];
+    for (const Run& run : runs) {
+      double h2 = 0.0;
+      for (int k = 0; k < up; ++k) h2 += (run.base[k] - x[k]) * (run.base[k] - x[k]);
+      if (h2 < 0.25 * dp * dp && x[up] < run.y_nominal.front() - 0.5 * dp) return true;
+    }
+    return false;
+  };
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] == Kind::fluid || P.body[i] >= 0) continue;
     const Vec<D>& x = P.position[i];
+    if (supports_a_run(i)) continue;
     double best_h2 = re * re, shift = 0.0;
     for (const Run& run : runs) {
       double h2 = 0.0;
