@@ -374,14 +374,40 @@ TEST(LongWallModels, ExtrapolatedAtHalfTheSpacing) {
   expect_column_passes(run_column("extrapolated", 0.00125), 0.00125);
 }
 
-// number_density: the wall layer's pressure from its own number density, dummies none (classic MPS). It fails every
-// exact test, and its errors in the tanks do not shrink with dp: the wall layer sees water on one side only.
+// ---------------------------------------------------------------------------------------------------------------
+// The other two models.
+//
+// mirror runs only on the square lattice, and there the tanks fail: still tank (dp 0.01 / 0.005) bottom -0.24 / +0.22
+// %, side walls rms 2.3 / 2.2 %, fluid rms 4.0 / 3.3 %, zero plane -0.13 / -0.30 dp, gradient +0.5 / +0.7 %;
+// accelerated a/g = 0.1: bottom +0.50 / +0.56 %, side 2.4 / 2.4 %, fluid 3.2 / 4.8 %, tilt -2.6 / -1.3 %; a/g = 0.2:
+// bottom +1.07 / +1.32 %, side 2.9 / 2.7 %, fluid 4.5 / 4.6 %, tilt -1.9 / -0.7 % (side and fluid errors not
+// shrinking with dp). That is the square lattice's doing, not the model's: extrapolated on the square lattice
+// (DISABLED_ExtrapolatedOnTheSquareLattice below) does the same. Where mirror is useful: flows on the square lattice
+// (the default lattice, and the dam break's), where its wall pressure at a released column's wall is the extrapolated
+// model's within 0.03 % of rho g h (measured a/20 to a/80: wall rms 0.39 / 0.16 / 0.30 %, force +2.7 / -1.2 / -2.6 %,
+// fluid rms 0.60 / 0.33 / 0.23 %).
+TEST(WallModels, MirrorGivesTheReleasedColumnsWallPressure) {
+  for (const double dp : {0.005, 0.0025}) expect_column_passes(run_column("mirror", dp), dp);
+}
+
+// number_density (the wall layer's pressure from its own number density, dummies none: classic MPS) fails the wall
+// tests; its tank errors do not shrink with dp (the wall layer sees water on one side only), the column's shrink at
+// first order. Measured, dp 0.01 / 0.005 m:
+//   still tank       bottom -8.4 / -9.2 %, side rms 9.6 / 10.8 %, fluid rms 4.5 / 3.5 %, zero plane -0.06 / +0.06 dp
+//   a/g = 0.1        bottom -8.1 / -8.9 %, side rms 10.0 / 11.1 %, fluid rms 4.5 / 3.5 %, tilt -2.0 / +1.1 %
+//   a/g = 0.2        bottom -7.7 / -8.7 %, side rms 10.0 / 11.5 %, fluid rms 4.6 / 3.6 %, tilt +0.5 / +0.1 %
+//   column a/20, a/40, a/80: wall rms 2.6 / 1.8 / 0.9 %, wall max 7.0 / 4.9 / 3.6 %, force -15 / -10 / -5.9 %,
+//                    fluid rms 2.6 / 1.6 / 0.6 % (of rho g h)
+// (its fluid's fitted gradient and the surface's tilt are right: what it gets wrong is the wall's own pressure).
 TEST(LongWallModels, DISABLED_NumberDensityFigures) {
   for (const double a : {0.0, 0.1, 0.2})
     for (const double dp : {0.01, 0.005}) run_tank("number_density", dp, a);
   for (const double dp : {0.005, 0.0025, 0.00125}) run_column("number_density", dp);
 }
 
+// The control: extrapolated on the square lattice (dp 0.01 / 0.005): still tank bottom -0.75 / -0.02 %, side rms
+// 2.4 / 2.0 %, fluid rms 4.0 / 3.2 %; a/g = 0.1: bottom +0.13 / +0.34 %, side 2.6 / 1.6 %, fluid 3.9 / 4.4 %, tilt
+// -2.5 / +0.7 %; a/g = 0.2: bottom +0.85 / +1.19 %, side 3.2 / 2.0 %, fluid 4.3 / 5.2 %, tilt +1.6 / +0.2 %.
 TEST(LongWallModels, DISABLED_ExtrapolatedOnTheSquareLattice) {
   for (const double a : {0.0, 0.1, 0.2})
     for (const double dp : {0.01, 0.005}) run_tank("extrapolated", dp, a, "square");
