@@ -60,6 +60,10 @@ TEST(ReleasedColumnPressure, MeetsItsBoundaryConditionsAndIsHarmonic) {
   EXPECT_LT(p(0.0, 0.0), rho * g * h);
   EXPECT_GT(p(0.0, 0.0), 0.0);
   EXPECT_NEAR(p(-0.03, 0.07), p(0.03, 0.07), 1e-12 * scale);
+  // An independent value: for a column much taller than wide, the pressure in the corner of wall and floor is
+  // rho g a (8 / pi^2) sum (-1)^(n+1) / (2n - 1)^2 = rho g a 8 G / pi^2 (G = 0.9159655942 Catalan's constant).
+  const double catalan = 0.915965594177219, pi = 3.14159265358979323846;
+  EXPECT_NEAR(released_column_pressure(0.0, 0.0, a, 20 * a, rho, g), scale * 8 * catalan / (pi * pi), 1e-6 * scale);
 }
 
 // Tilted hydrostatics (coupling/tilted_hydrostatic.hpp): zero pressure on the surface, the gradient rho G, and the
