@@ -12,8 +12,7 @@ namespace slide {
 // Fourier series 1 = sum_n 2 (-1)^(n+1) / (a k_n) cos(k_n x) on [0, a), gives
 //   p(x, y) = rho g sum_{n>=1} 2 (-1)^(n+1) / (a k_n^2) cos(k_n x) sinh(k_n (h - y)) / cosh(k_n h),
 //   k_n = (2n - 1) pi / (2 a)
-// (the classical dam-break initial pressure; e.g. Stansby, Chegini & Barnes 1998, J. Fluid Mech. 374, and the
-// impulsive-start problems of Greco et al.). Each term satisfies Laplace's equation and the conditions on x = 0,
+// (derived here by separation of variables; issue 12 states the same series). Each term satisfies Laplace's equation and the conditions on x = 0,
 // x = a and y = h; the floor's condition holds for the sum. The terms fall as 1/n^2 (exp(-k_n y) above the floor),
 // so the sum is taken until a term is below 1e-12 of rho g a and at most `max_terms` terms (on the floor, 2000
 // terms leave about 1e-4 of rho g a). Even in x: p(-x, y) = p(x, y) continues the field into the wall.

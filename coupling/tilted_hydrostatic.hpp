@@ -12,7 +12,7 @@ namespace slide {
 // water at rest under gx = 0: area over width), since the tilted plane moves as much water up on one side as down on
 // the other (while it meets both walls above the floor: |gx / gy| width / 2 < L). Then
 //   surface y_s(x) = L - (gx / gy) (x - x_c),   p(x, y) = rho G . ((x, y) - (x_c, L)),   x_c = left + width / 2
-// (e.g. Batchelor 1967, An Introduction to Fluid Dynamics, sec. 1.4; any text's "liquid in an accelerating tank").
+// (elementary hydrostatics in the tank's frame: the textbook "liquid in a uniformly accelerated tank").
 struct TiltedHydrostatic {
   Vec<2> gravity;       // m/s^2, (gx, gy) with gy < 0
   double left = 0.0;    // m, the left wall's face
