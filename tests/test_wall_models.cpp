@@ -400,6 +400,13 @@ TEST(WallModels, MirrorGivesTheReleasedColumnsWallPressure) {
   for (const double dp : {0.005, 0.0025}) expect_column_passes(run_column("mirror", dp), dp);
 }
 
+// The runs behind mirror's tank figures above, and its column at a/80.
+TEST(LongWallModels, DISABLED_MirrorFigures) {
+  for (const double a : {0.0, 0.1, 0.2})
+    for (const double dp : {0.01, 0.005}) run_tank("mirror", dp, a);
+  run_column("mirror", 0.00125);
+}
+
 // number_density (the wall layer's pressure from its own number density, dummies none: classic MPS) fails the wall
 // tests; its tank errors do not shrink with dp (the wall layer sees water on one side only), the column's shrink at
 // first order. Measured, dp 0.01 / 0.005 m:
