@@ -227,7 +227,8 @@ TankFigures run_tank(const std::string& model, double dp, double a_over_g, std::
 // has the period 2 pi / (c0 sqrt((pi / 2a)^2 + (pi / 2h)^2)) = 1.79 h / c0 here). Departures from the defaults,
 // each measured (extrapolated model unless said):
 // * clamp_negative_pressure off: with the clamp the ringing's negative half is cut off, the column cavitates at
-//   p = 0, and the mean wall force comes out 50-63 % low for mirror and extrapolated alike (a/20 to a/80).
+//   p = 0, and the mean wall force comes out 50-63 % low for mirror and extrapolated alike (a/20 to a/80, from the
+//   hydrostatic start with c0 = 50 sqrt(g h) and T = 0.1 sqrt(h / g)).
 // * initial_state lattice (p = 0 at t = 0; the water compresses under gravity as it is released): the hydrostatic
 //   start puts the bottom row 0.5 % denser than n0 (0.494 dp above the floor), a compression that does not depend
 //   on c0, so its pressure grows as c0^2: 13 rho g h at c0 = 50 sqrt(g h), 195 rho g h at 200 sqrt(g h) (1.56 rho g
