@@ -231,6 +231,7 @@ void add_rigid_body(SceneBuild& b, const YAML::Node& bn, const std::string& path
   rep.inertia = spec.inertia;
   rep.particles = add_body_particles(b, pts, outline, body, density, path);
   rep.placed = from_rigid(rigid::centroid(outline));
+  for (const auto& v : outline) rep.outline.push_back(from_rigid(v));
   rep.free_while_settling = motion.free_while_settling;
   b.scene->bodies.push_back(rep);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "coupling/rigid_bodies.hpp"
+#include "coupling/water_gap.hpp"
 
 namespace slide::cases {
 namespace {
@@ -49,6 +50,18 @@ std::string start(const Scene& scene) {
   return out;
 }
 
+// A body's outline where it stands now: as placed, turned by the angle it has turned since and moved with its
+// centre of mass.
+std::vector<Vec<2>> outline_now(const BodyReport& b, const rigid::PlanarState& s) {
+  const double c = std::cos(s.angle), sn = std::sin(s.angle);
+  std::vector<Vec<2>> out;
+  for (const Vec<2>& v : b.outline) {
+    const Vec<2> r = v - b.placed;
+    out.push_back(Vec<2>(s.position[0] + c * r[0] - sn * r[1], s.position[1] + sn * r[0] + c * r[1]));
+  }
+  return out;
+}
+
 std::string bodies(const Scene& scene) {
   std::string out;
   for (const auto& b : scene.bodies)
@@ -58,15 +71,23 @@ std::string bodies(const Scene& scene) {
         "  area            {:.6g} m^2, displaced below the still-water level {:.6g} m^2, buoyancy / weight {:.4g}\n",
         b.name, b.motion, b.particles, b.mass, b.mass_particles, b.inertia, b.inertia_particles, b.area,
         b.displaced_area, b.buoyancy_ratio);
-  // Where a body that floated with the water while it settled came to rest.
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     const auto& b = scene.bodies[k];
-    if (!b.free_while_settling || !scene.settling) continue;
     const auto s = scene.simulation->bodies()->state(static_cast<int>(k));
-    out += fmt::format("  settled with the water: centre ({:.6g}, {:.6g}) m, angle {:.4g} deg, {:.3g} mm from "
-                       "where it was put\n",
-                       s.position[0], s.position[1], s.angle * 180.0 / M_PI,
-                       1000.0 * (Vec<2>(s.position[0], s.position[1]) - b.placed).norm());
+    // Where a body that floated with the water while it settled came to rest.
+    if (b.free_while_settling && scene.settling)
+      out += fmt::format("  settled with the water: centre ({:.6g}, {:.6g}) m, angle {:.4g} deg, {:.3g} mm from "
+                         "where it was put\n",
+                         s.position[0], s.position[1], s.angle * 180.0 / M_PI,
+                         1000.0 * (Vec<2>(s.position[0], s.position[1]) - b.placed).norm());
+    const WaterGap gap = water_gap_along_outline(*scene.simulation, outline_now(b, s));
+    const double dp = scene.simulation->options.dp;
+    if (gap.wetted_length > 0.0)
+      out += fmt::format("  water gap       {:+.3f} dp at t = 0, mean over {:.3g} m of wetted face (the water's edge "
+                         "against the face; > 0: it stands off)\n",
+                         gap.mean / dp, gap.wetted_length);
+    else
+      out += "  water gap       no wetted face at t = 0\n";
   }
   return out;
 }

@@ -54,6 +54,7 @@ struct BodyReport {
   double buoyancy_ratio = 0.0;   // rho_water g displaced / (m g); NaN without a still-water level
   std::size_t particles = 0;     // boundary particles
   Vec<2> placed = Vec<2>::Zero();  // centre of mass where the scene puts it, m
+  std::vector<Vec<2>> outline;     // where the scene puts it, counter-clockwise, m
   bool free_while_settling = false;  // during_settling: free
 };
 

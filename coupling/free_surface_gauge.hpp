@@ -15,12 +15,34 @@ namespace slide {
 // (A threshold of n0 / 2, which ignores that n0 excludes a particle's own weight, put it 0.3 dp above the edge.)
 // Scans down from above the highest nearby fluid particle in steps of dp/4, then bisects. NaN when the line meets
 // no water. Periodic ghosts take part, here and in the number density: they are the water beyond the period's ends.
+// The water's edge along a line: the first distance s in [s_begin, s_end] from `origin` along the unit vector
+// `into_water` at which phi (above) reaches 1/2, by steps of dp/4 and then bisection; NaN if it never does. The
+// free-surface gauge walks down a vertical line with it, the gap between a body's face and its water
+// (coupling/water_gap.hpp) out along the face's normal.
+template <int D>
+double water_edge_along(const Simulation<D>& sim, const Vec<D>& origin, const Vec<D>& into_water, double s_begin,
+                        double s_end) {
+  const double dp = sim.options.dp;
+  const double threshold = 0.5 * kernel_volume_integral<D>(sim.re()) / std::pow(dp, D);
+  auto wet = [&](double s) { return sim.fluid_number_density_at(Vec<D>(origin + s * into_water)) >= threshold; };
+  const double step = 0.25 * dp;
+  for (double s = s_begin; s <= s_end; s += step) {
+    if (!wet(s)) continue;
+    double dry = s - step, water = s;
+    for (int it = 0; it < 20; ++it) {
+      const double mid = 0.5 * (dry + water);
+      (wet(mid) ? water : dry) = mid;
+    }
+    return 0.5 * (dry + water);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 template <int D>
 double free_surface_elevation(const Simulation<D>& sim, const Vec<D>& gauge_point) {
   constexpr int up = D - 1;
   const auto& P = sim.particles;
-  const double re = sim.re(), dp = sim.options.dp;
-  const double threshold = 0.5 * kernel_volume_integral<D>(re) / std::pow(dp, D);
+  const double re = sim.re();
   double top = -std::numeric_limits<double>::infinity(), bottom = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] != Kind::fluid) continue;
@@ -31,23 +53,10 @@ double free_surface_elevation(const Simulation<D>& sim, const Vec<D>& gauge_poin
     bottom = std::min(bottom, P.position[i][up]);
   }
   if (!std::isfinite(top)) return std::numeric_limits<double>::quiet_NaN();
-  Vec<D> q = gauge_point;
-  auto density_at = [&](double y) {
-    q[up] = y;
-    return sim.fluid_number_density_at(q);
-  };
-  const double step = 0.25 * dp;
-  for (double y = top + re; y >= bottom - re; y -= step) {
-    if (density_at(y) >= threshold) {
-      double below = y, above = y + step;
-      for (int it = 0; it < 20; ++it) {
-        const double mid = 0.5 * (below + above);
-        (density_at(mid) >= threshold ? below : above) = mid;
-      }
-      return 0.5 * (below + above);
-    }
-  }
-  return std::numeric_limits<double>::quiet_NaN();
+  Vec<D> origin = gauge_point, down = Vec<D>::Zero();
+  origin[up] = top + re;
+  down[up] = -1.0;
+  return origin[up] - water_edge_along<D>(sim, origin, down, 0.0, top - bottom + 2.0 * re);
 }
 
 }  // namespace slide

@@ -109,6 +109,38 @@ bodies:
   EXPECT_NE(r.output.find("2900 fluid"), std::string::npos) << r.output;  // the block's volume is left dry
 }
 
+// The mean gap between a body's faces and its water at t = 0, in dp, from slide check's "water gap" line.
+double reported_water_gap(const CommandResult& r) {
+  const std::size_t at = r.output.find("water gap");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "no water gap line: " << r.output;
+    return NAN;
+  }
+  return std::stod(r.output.substr(at + std::string("water gap").size()));
+}
+
+// slide check says how far the water stands off a body: a block whose bottom lies half a spacing above a lattice
+// row has its water there (measured +0.028 dp: the edge measure's own offset on the square lattice); lowered by
+// 0.3 dp, the row under it is closer than dp/2 and left out, and the water stands 0.6 dp off (measured +0.608).
+TEST(Cli, CheckReportsTheWaterGapAtABodysFaces) {
+  const std::string scene = R"(particle_spacing: 0.01
+end_time: 0.01
+fluid:
+  phases: [{name: water}]
+  regions: [{type: below_level, level: 0.3}]
+walls:
+  - points: [[0, 0.5], [0, 0], [1.0, 0], [1.0, 0.5]]
+bodies:
+  - {name: block, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.1]}, density: 500}
+)";
+  const CommandResult on_row = check_scene(scene);
+  EXPECT_EQ(on_row.exit_code, 0) << on_row.output;
+  EXPECT_NEAR(reported_water_gap(on_row), 0.03, 0.01);
+  const CommandResult off_row = check_scene(scene, "--set bodies[0].shape.center=[0.5,0.297]");
+  EXPECT_EQ(off_row.exit_code, 0) << off_row.output;
+  EXPECT_GT(reported_water_gap(off_row), 0.5);
+}
+
 TEST(Cli, BadOverride) { expect_invalid(check_scene(kGoodScene, "--set nonsense"), "--set", "="); }
 
 TEST(Cli, RunOfInvalidSceneWritesNothing) {

@@ -1,0 +1,56 @@
+// The water gap (coupling/water_gap.hpp) against faces placed at known distances from a flat block of water on
+// either lattice: a face on the water's edge reads the gauge's own offset (+0.03 dp square, +0.02 dp hexagonal: the
+// contour lies that far inside the water), and moving the face away from the water adds exactly the distance moved.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "coupling/water_gap.hpp"
+#include "tests/cli_helpers.hpp"
+#include "tests/scene_runner.hpp"
+
+namespace slide::testing {
+namespace {
+
+// A free block of water [0, 0.4] x [0, 0.2], no gravity and no walls (the lattice exactly as filled), and the
+// offset of its bottom edge: the rectangle fill puts the bottom row half a row spacing above y = 0, so the edge is
+// y = 0.
+std::unique_ptr<cases::Scene> water_block(const std::string& lattice) {
+  const auto dir = fresh_directory("water_gap_" + lattice);
+  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
+end_time: 1
+gravity: [0, 0]
+lattice: )" + lattice + R"(
+method: {sound_speed: 10, initial_state: lattice, wall_pressure: extrapolated}
+fluid:
+  phases: [{name: water}]
+  regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.2]}]
+)");
+  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+}
+
+// A box under the water, its top face at y = top (counter-clockwise).
+std::vector<Vec<2>> box_below(double top) {
+  return {Vec<2>(0.05, top - 0.1), Vec<2>(0.35, top - 0.1), Vec<2>(0.35, top), Vec<2>(0.05, top)};
+}
+
+void expect_gap_reads_the_distance(const std::string& lattice, double edge_offset_over_dp) {
+  const auto scene = water_block(lattice);
+  const auto& sim = *scene->simulation;
+  const double dp = sim.options.dp;
+  for (const double moved_over_dp : {0.0, 0.25, 0.5, -0.3}) {
+    const WaterGap gap = water_gap_along_outline(sim, box_below(-moved_over_dp * dp));
+    // Only the top face is wetted: 0.3 m less 2 dp at each end, sampled every dp/4.
+    EXPECT_NEAR(gap.wetted_length, 0.3 - 4 * dp + 0.25 * dp, 1e-9) << lattice;
+    EXPECT_NEAR(gap.mean / dp, moved_over_dp + edge_offset_over_dp, 0.01) << lattice << " moved " << moved_over_dp;
+  }
+  // A box beside the water, not touching it: no wetted face.
+  const std::vector<Vec<2>> away = {Vec<2>(0.6, 0.0), Vec<2>(0.8, 0.0), Vec<2>(0.8, 0.1), Vec<2>(0.6, 0.1)};
+  EXPECT_EQ(water_gap_along_outline(sim, away).wetted_length, 0.0);
+}
+
+TEST(WaterGap, ReadsTheDistanceFromASquareLattice) { expect_gap_reads_the_distance("square", 0.03); }
+TEST(WaterGap, ReadsTheDistanceFromAHexagonalLattice) { expect_gap_reads_the_distance("hexagonal", 0.02); }
+
+}  // namespace
+}  // namespace slide::testing
