@@ -91,8 +91,8 @@ TEST(Cli, BodyOutlineMustBeConvex) {
                  "bodies[0].shape", "convex");
 }
 
-TEST(Cli, CheckReportsBodyMassAndBuoyancy) {
-  const CommandResult r = check_scene(R"(particle_spacing: 0.01
+// A 0.2 m x 0.1 m block of 500 kg/m^3 at its draft in 0.3 m of water, its bottom half a spacing above a row.
+const char* kFloatingBlockScene = R"(particle_spacing: 0.01
 end_time: 0.01
 fluid:
   phases: [{name: water}]
@@ -101,7 +101,10 @@ walls:
   - points: [[0, 0.5], [0, 0], [1.0, 0], [1.0, 0.5]]
 bodies:
   - {name: block, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.1]}, density: 500}
-)");
+)";
+
+TEST(Cli, CheckReportsBodyMassAndBuoyancy) {
+  const CommandResult r = check_scene(kFloatingBlockScene);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("mass            10 kg/m (lattice sum 10)"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("displaced below the still-water level 0.01 m^2, buoyancy / weight 1"), std::string::npos)
@@ -123,20 +126,10 @@ double reported_water_gap(const CommandResult& r) {
 // row has its water there (measured +0.028 dp: the edge measure's own offset on the square lattice); lowered by
 // 0.3 dp, the row under it is closer than dp/2 and left out, and the water stands 0.6 dp off (measured +0.608).
 TEST(Cli, CheckReportsTheWaterGapAtABodysFaces) {
-  const std::string scene = R"(particle_spacing: 0.01
-end_time: 0.01
-fluid:
-  phases: [{name: water}]
-  regions: [{type: below_level, level: 0.3}]
-walls:
-  - points: [[0, 0.5], [0, 0], [1.0, 0], [1.0, 0.5]]
-bodies:
-  - {name: block, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.1]}, density: 500}
-)";
-  const CommandResult on_row = check_scene(scene);
+  const CommandResult on_row = check_scene(kFloatingBlockScene);
   EXPECT_EQ(on_row.exit_code, 0) << on_row.output;
   EXPECT_NEAR(reported_water_gap(on_row), 0.03, 0.01);
-  const CommandResult off_row = check_scene(scene, "--set bodies[0].shape.center=[0.5,0.297]");
+  const CommandResult off_row = check_scene(kFloatingBlockScene, "--set bodies[0].shape.center=[0.5,0.297]");
   EXPECT_EQ(off_row.exit_code, 0) << off_row.output;
   EXPECT_GT(reported_water_gap(off_row), 0.5);
 }

@@ -7,23 +7,13 @@
 #include "coupling/free_surface_gauge.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
+#include "tests/water_block_scene.hpp"
 
 namespace slide::testing {
 namespace {
 
 void expect_gauge_reads_the_edge(const std::string& lattice) {
-  const auto dir = fresh_directory("gauge_" + lattice);
-  // A free block of water, no gravity and no walls: nothing moves, the lattice is exactly as filled.
-  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
-end_time: 1
-gravity: [0, 0]
-lattice: )" + lattice + R"(
-method: {sound_speed: 10, initial_state: lattice, wall_pressure: extrapolated}
-fluid:
-  phases: [{name: water}]
-  regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.2]}]
-)");
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto scene = free_water_block(lattice, "gauge");
   const auto& sim = *scene->simulation;
   const double dp = sim.options.dp;
   double top = -1.0;

@@ -8,26 +8,10 @@
 #include "coupling/water_gap.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
+#include "tests/water_block_scene.hpp"
 
 namespace slide::testing {
 namespace {
-
-// A free block of water [0, 0.4] x [0, 0.2], no gravity and no walls (the lattice exactly as filled), and the
-// offset of its bottom edge: the rectangle fill puts the bottom row half a row spacing above y = 0, so the edge is
-// y = 0.
-std::unique_ptr<cases::Scene> water_block(const std::string& lattice) {
-  const auto dir = fresh_directory("water_gap_" + lattice);
-  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
-end_time: 1
-gravity: [0, 0]
-lattice: )" + lattice + R"(
-method: {sound_speed: 10, initial_state: lattice, wall_pressure: extrapolated}
-fluid:
-  phases: [{name: water}]
-  regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.2]}]
-)");
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
-}
 
 // A box under the water, its top face at y = top (counter-clockwise).
 std::vector<Vec<2>> box_below(double top) {
@@ -35,7 +19,7 @@ std::vector<Vec<2>> box_below(double top) {
 }
 
 void expect_gap_reads_the_distance(const std::string& lattice, double edge_offset_over_dp) {
-  const auto scene = water_block(lattice);
+  const auto scene = free_water_block(lattice, "water_gap");  // its bottom edge is y = 0
   const auto& sim = *scene->simulation;
   const double dp = sim.options.dp;
   for (const double moved_over_dp : {0.0, 0.25, 0.5, -0.3}) {
