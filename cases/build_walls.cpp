@@ -71,8 +71,15 @@ void build_walls(SceneBuild& b) {
     const auto face = points_of(wn["points"]);
     const bool left = fluid_side_names.parse(wn["fluid_side"].as<std::string>()) == FluidSide::left;
     const std::vector<BoundaryPoint> pts = wall_points(b, wn, w, face, left);
-    for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
+    const std::size_t first = b.particles().size();
     add_wall_particles(b, pts, w);
+    if (wn["gate"].as<bool>()) {
+      if (b.initial_state != InitialState::settled)
+        throw SceneError(fmt::format("walls[{}].gate", w), "a gate needs method.initial_state: settled (it holds the "
+                                                            "water while it settles, and is taken away at t = 0)");
+      for (std::size_t i = first; i < b.particles().size(); ++i) b.gate_ids.push_back(b.particles().id[i]);
+    }
+    for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
   }
 }
 

@@ -47,6 +47,9 @@ std::string start(const Scene& scene) {
                        "m/s, residual speed {:.3g} m/s, largest shift {:.3g} dp\n",
                        s->duration, s->damping_rate, s->steps, s->largest_speed, s->residual_speed,
                        s->largest_shift / scene.simulation->options.dp);
+  if (scene.gate_particles > 0)
+    out += fmt::format("gates: {} boundary particles held the water while it settled and are taken away at t = 0\n",
+                       scene.gate_particles);
   return out;
 }
 

@@ -51,6 +51,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
     throw SceneError("domain.periodic_x", e.what());
   }
   settle(b);
+  lift_gates(b);
 
   b.scene->simulation = std::move(b.sim);
   return std::move(b.scene);

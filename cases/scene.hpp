@@ -89,6 +89,7 @@ struct Scene {
   Vec<2> lattice_offset = Vec<2>::Zero();  // m, how far the start lattice was moved (to meet a body's bottom)
   std::string sound_speed_source;  // how c0 was chosen
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
+  std::size_t gate_particles = 0;  // boundary particles of gates (walls[].gate), taken away at t = 0
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
   std::vector<BodyReport> bodies;
   std::vector<SlideReport> slides;

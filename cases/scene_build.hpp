@@ -54,6 +54,7 @@ struct SceneBuild {
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.
   std::vector<FaceSegment> faces;
   std::vector<std::string> boundary_owner;
+  std::vector<std::uint32_t> gate_ids;  // the particles of gates (walls[].gate), taken away at t = 0
   // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0), and the
   // deformable slides (filled with their phase's particles by fill_fluid_regions).
   std::shared_ptr<RigidBodies> bodies;
@@ -90,6 +91,7 @@ void read_outputs(SceneBuild& b);              // build_outputs.cpp
 void finish_bodies(SceneBuild& b);             // build_bodies.cpp
 void set_phases(SceneBuild& b);                // build_phases.cpp
 void settle(SceneBuild& b);                    // build_initial_state.cpp
+void lift_gates(SceneBuild& b);                // build_initial_state.cpp: after settling, the gates go
 
 // A body's outline from its shape, counter-clockwise in world coordinates at t = 0; it must be convex
 // (build_bodies.cpp; the walls need the first body's to move the hexagonal lattice).

@@ -64,7 +64,10 @@ Schema wall_schema() {
        {"fluid_side", S::choice("side of the polyline (walking from the first vertex) where the fluid is",
                                 fluid_side_names.names(), std::string(to_string(FluidSide::left)))},
        {"layers",
-        S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel", 0L, 0L, 10L)}});
+        S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel", 0L, 0L, 10L)},
+       {"gate", S::boolean("a gate: it holds the water while it settles (needs method.initial_state: settled) and "
+                           "is taken away at t = 0, as a dam break's gate is lifted",
+                           false)}});
 }
 
 Schema body_schema() {

@@ -1,5 +1,6 @@
 #pragma once
 // The particle store: one array per quantity (structure of arrays), all of the same length.
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -112,6 +113,24 @@ struct Particles {
   void reorder(const std::vector<std::uint32_t>& order) {
     if (!ghost_source.empty()) throw std::logic_error("Particles::reorder with periodic ghosts present");
     for_each_array([&](auto& v) { permute(v, order); });
+  }
+
+  // Removes every particle for which drop(i) holds (real particles only: no ghosts may be present), keeping the
+  // others in their order, and renumbers the ids 0 .. size() - 1 in their former order, so ids stay creation ranks.
+  template <class Drop>
+  void remove_if(Drop drop) {
+    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_if with periodic ghosts present");
+    std::vector<std::uint32_t> keep;
+    for (std::size_t i = 0; i < size(); ++i)
+      if (!drop(i)) keep.push_back(static_cast<std::uint32_t>(i));
+    for_each_array([&](auto& v) {
+      permute(v, keep);
+      v.resize(keep.size());
+    });
+    std::vector<std::uint32_t> by_id(size());
+    for (std::uint32_t i = 0; i < by_id.size(); ++i) by_id[i] = i;
+    std::sort(by_id.begin(), by_id.end(), [&](std::uint32_t a, std::uint32_t b) { return id[a] < id[b]; });
+    for (std::uint32_t rank = 0; rank < by_id.size(); ++rank) id[by_id[rank]] = rank;
   }
 
   template <class T>
