@@ -121,8 +121,6 @@ void settle(SceneBuild& b) {
 
 void lift_gates(SceneBuild& b) {
   if (b.gate_ids.empty()) return;
-  if (b.sim->options.periodic_x)
-    throw SceneError("walls", "a gate cannot be used with a periodic domain");
   Particles<2>& P = b.particles();
   std::vector<char> is_gate(P.size(), 0);
   for (const std::uint32_t id : b.gate_ids) is_gate[id] = 1;  // ids are creation ranks, 0 .. size() - 1

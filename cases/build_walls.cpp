@@ -62,25 +62,41 @@ void add_wall_particles(SceneBuild& b, const std::vector<BoundaryPoint>& pts, st
   }
 }
 
+// A gate is checked before anything runs: it needs the settled start, and a domain that is not periodic (the
+// gate's particles are taken away from the real particles, which periodic ghosts copy).
+void check_gate(const SceneBuild& b, std::size_t w) {
+  const std::string key = fmt::format("walls[{}].gate", w);
+  if (b.initial_state != InitialState::settled)
+    throw SceneError(key, "a gate needs method.initial_state: settled (it holds the water while it settles, and is "
+                          "taken away at t = 0)");
+  if (b.r["domain"] && b.r["domain"]["periodic_x"].as<bool>())
+    throw SceneError(key, "a gate cannot be used with a periodic domain (domain.periodic_x)");
+}
+
 }  // namespace
 
+// Lasting walls first, then gates: a point within dp/2 of a particle already placed is left out, so a gate laid
+// first would take the places of the floor's particles it crosses, and lifting it would leave a hole. A gate's face
+// is not one of the scene's faces: bodies do not collide with it, and regions are not laid by it (water on either
+// side of a gate is a rectangle or polygon region; a below_level region fills the tank as if there were no gate, and
+// the overlap check then refuses water on the gate's particles).
 void build_walls(SceneBuild& b) {
   b.scene->lattice_offset = lattice_offset_for_bodies(b);
-  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
-    const auto wn = b.r["walls"][w];
-    const auto face = points_of(wn["points"]);
-    const bool left = fluid_side_names.parse(wn["fluid_side"].as<std::string>()) == FluidSide::left;
-    const std::vector<BoundaryPoint> pts = wall_points(b, wn, w, face, left);
-    const std::size_t first = b.particles().size();
-    add_wall_particles(b, pts, w);
-    if (wn["gate"].as<bool>()) {
-      if (b.initial_state != InitialState::settled)
-        throw SceneError(fmt::format("walls[{}].gate", w), "a gate needs method.initial_state: settled (it holds the "
-                                                            "water while it settles, and is taken away at t = 0)");
-      for (std::size_t i = first; i < b.particles().size(); ++i) b.gate_ids.push_back(b.particles().id[i]);
+  for (const bool gates : {false, true})
+    for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
+      const auto wn = b.r["walls"][w];
+      if (wn["gate"].as<bool>() != gates) continue;
+      if (gates) check_gate(b, w);
+      const auto face = points_of(wn["points"]);
+      const bool left = fluid_side_names.parse(wn["fluid_side"].as<std::string>()) == FluidSide::left;
+      const std::vector<BoundaryPoint> pts = wall_points(b, wn, w, face, left);
+      const std::size_t first = b.particles().size();
+      add_wall_particles(b, pts, w);
+      if (gates)
+        for (std::size_t i = first; i < b.particles().size(); ++i) b.gate_ids.push_back(b.particles().id[i]);
+      else
+        for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
     }
-    for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
-  }
 }
 
 }  // namespace slide::cases

@@ -67,15 +67,15 @@ std::vector<Vec<2>> outline_now(const BodyReport& b, const rigid::PlanarState& s
 
 std::string bodies(const Scene& scene) {
   std::string out;
-  for (const auto& b : scene.bodies)
+  const double dp = scene.simulation->options.dp;
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const auto& b = scene.bodies[k];
     out += fmt::format(
         "body {:<10} {} motion, {} boundary particles\n"
         "  mass            {:.6g} kg/m (lattice sum {:.6g}), inertia {:.6g} kg m (lattice sum {:.6g})\n"
         "  area            {:.6g} m^2, displaced below the still-water level {:.6g} m^2, buoyancy / weight {:.4g}\n",
         b.name, b.motion, b.particles, b.mass, b.mass_particles, b.inertia, b.inertia_particles, b.area,
         b.displaced_area, b.buoyancy_ratio);
-  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
-    const auto& b = scene.bodies[k];
     const auto s = scene.simulation->bodies()->state(static_cast<int>(k));
     // Where a body that floated with the water while it settled came to rest.
     if (b.free_while_settling && scene.settling)
@@ -84,7 +84,6 @@ std::string bodies(const Scene& scene) {
                          s.position[0], s.position[1], s.angle * 180.0 / M_PI,
                          1000.0 * (Vec<2>(s.position[0], s.position[1]) - b.placed).norm());
     const WaterGap gap = water_gap_along_outline(*scene.simulation, outline_now(b, s));
-    const double dp = scene.simulation->options.dp;
     if (gap.wetted_length > 0.0)
       out += fmt::format("  water gap       {:+.3f} dp at t = 0, mean over {:.3g} m of wetted face (the water's edge "
                          "against the face; > 0: it stands off)\n",

@@ -66,7 +66,8 @@ Schema wall_schema() {
        {"layers",
         S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover the kernel", 0L, 0L, 10L)},
        {"gate", S::boolean("a gate: it holds the water while it settles (needs method.initial_state: settled) and "
-                           "is taken away at t = 0, as a dam break's gate is lifted",
+                           "is taken away at t = 0, as a dam break's gate is lifted; bodies do not collide with it, "
+                           "and water beside it is laid by rectangle or polygon regions (below_level ignores it)",
                            false)}});
 }
 

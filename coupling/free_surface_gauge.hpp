@@ -6,19 +6,11 @@
 
 namespace slide {
 
-// Free-surface elevation at a gauge (x, or (x, y) in 3-D): the highest point on the vertical line where the kernel
-// interpolation of the water's volume fraction,
-//   phi(q) = dp^d sum_fluid W(|q - r_j|) / integral(W dV),
-// reaches 1/2. phi is 1 inside the water (each particle stands for dp^d of it) and 1/2 at a flat edge of a
-// continuum, so the contour is the water's edge: on a flat square or hexagonal lattice at re = 2.1 dp it lies
-// 0.03 dp and 0.02 dp below the edge (half a row spacing above the top row), measured by tests/test_gauge.cpp.
-// (A threshold of n0 / 2, which ignores that n0 excludes a particle's own weight, put it 0.3 dp above the edge.)
-// Scans down from above the highest nearby fluid particle in steps of dp/4, then bisects. NaN when the line meets
-// no water. Periodic ghosts take part, here and in the number density: they are the water beyond the period's ends.
 // The water's edge along a line: the first distance s in [s_begin, s_end] from `origin` along the unit vector
-// `into_water` at which phi (above) reaches 1/2, by steps of dp/4 and then bisection; NaN if it never does. The
-// free-surface gauge walks down a vertical line with it, the gap between a body's face and its water
-// (coupling/water_gap.hpp) out along the face's normal.
+// `into_water` at which the water's volume fraction phi (free_surface_elevation, below) reaches 1/2, by steps of
+// dp/4 and then bisection. NaN if it never does, or if the line already starts in water (s_begin wet: no edge
+// between there and the dry side was seen). The free-surface gauge walks down a vertical line with it, the gap
+// between a body's face and its water (coupling/water_gap.hpp) out along the face's normal.
 template <int D>
 double water_edge_along(const Simulation<D>& sim, const Vec<D>& origin, const Vec<D>& into_water, double s_begin,
                         double s_end) {
@@ -26,7 +18,10 @@ double water_edge_along(const Simulation<D>& sim, const Vec<D>& origin, const Ve
   const double threshold = 0.5 * kernel_volume_integral<D>(sim.re()) / std::pow(dp, D);
   auto wet = [&](double s) { return sim.fluid_number_density_at(Vec<D>(origin + s * into_water)) >= threshold; };
   const double step = 0.25 * dp;
-  for (double s = s_begin; s <= s_end; s += step) {
+  if (wet(s_begin)) return std::numeric_limits<double>::quiet_NaN();
+  const long samples = static_cast<long>(std::floor((s_end - s_begin) / step + 1e-9));
+  for (long k = 1; k <= samples; ++k) {
+    const double s = s_begin + k * step;
     if (!wet(s)) continue;
     double dry = s - step, water = s;
     for (int it = 0; it < 20; ++it) {
@@ -38,6 +33,15 @@ double water_edge_along(const Simulation<D>& sim, const Vec<D>& origin, const Ve
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+// Free-surface elevation at a gauge (x, or (x, y) in 3-D): the highest point on the vertical line where the kernel
+// interpolation of the water's volume fraction,
+//   phi(q) = dp^d sum_fluid W(|q - r_j|) / integral(W dV),
+// reaches 1/2. phi is 1 inside the water (each particle stands for dp^d of it) and 1/2 at a flat edge of a
+// continuum, so the contour is the water's edge: on a flat square or hexagonal lattice at re = 2.1 dp it lies
+// 0.03 dp and 0.02 dp below the edge (half a row spacing above the top row), measured by tests/test_gauge.cpp.
+// (A threshold of n0 / 2, which ignores that n0 excludes a particle's own weight, put it 0.3 dp above the edge.)
+// Scans down from above the highest nearby fluid particle in steps of dp/4, then bisects. NaN when the line meets
+// no water. Periodic ghosts take part, here and in the number density: they are the water beyond the period's ends.
 template <int D>
 double free_surface_elevation(const Simulation<D>& sim, const Vec<D>& gauge_point) {
   constexpr int up = D - 1;

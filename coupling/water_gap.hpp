@@ -20,8 +20,10 @@ struct WaterGap {
 
 // The mean gap over a convex outline (vertices counter-clockwise, world coordinates, the outline as it stands now).
 // Samples every dp/4 along each face, leaving out 2 dp at each end (beside a corner the contour bends round it). A
-// sample counts as wetted when the edge lies within [-2 dp, 3 dp] of the face and the water 3 dp out is bulk water
-// (volume fraction at least 0.9), so a face at a free surface, or above the water, does not count.
+// sample counts as wetted when the water 3 dp + re out along the normal is bulk water (volume fraction at least
+// 0.9), so a face at a free surface, or above the water, does not count, and the edge lies within (-2 dp, 3 dp] of
+// the face (water reaching 2 dp into the body, through a body thinner than 4 dp, is not this face's). The wetted
+// length is the wetted samples times dp/4.
 inline WaterGap water_gap_along_outline(const Simulation<2>& sim, const std::vector<Vec<2>>& outline) {
   const double dp = sim.options.dp;
   const double bulk = 0.9 * kernel_volume_integral<2>(sim.re()) / (dp * dp);
@@ -35,7 +37,7 @@ inline WaterGap water_gap_along_outline(const Simulation<2>& sim, const std::vec
     const long samples = static_cast<long>(std::floor((length - 4.0 * dp) / (0.25 * dp) + 1e-9)) + 1;
     for (long m = 0; m < samples; ++m) {
       const Vec<2> p = a + (2.0 * dp + 0.25 * dp * m) * along;
-      if (sim.fluid_number_density_at(Vec<2>(p + 3.0 * dp * outward)) < bulk) continue;
+      if (sim.fluid_number_density_at(Vec<2>(p + (3.0 * dp + sim.re()) * outward)) < bulk) continue;
       const double gap = water_edge_along<2>(sim, p, outward, -2.0 * dp, 3.0 * dp);
       if (!std::isfinite(gap)) continue;
       sum += gap;

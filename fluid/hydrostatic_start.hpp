@@ -163,13 +163,21 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
       if (cap_count[b] > 0) (*body_shift)[b] = cap_shift_sum[b] / cap_count[b];
   }
   // Boundary particles: the shift of the horizontally nearest run that spans their height (within re
-  // horizontally); above a run's top they take its top shift. One of an upward-facing face (normal within 60 degrees
-  // of up) in a run's own column below its bottom (the floor, or a step the run stands on) is that run's support
-  // and keeps its place: each run is compressed up from its support, so the gap between them is already the
-  // compressed one. Why not the next run that spans that height: beside a convex corner (a step, a body's bottom
-  // corner) that is the deeper run beside the corner, compressed more, and the step's top rows would drop away from
-  // the water on them (n 0.94 n0 there, zero pressure, and the corner collapsed within 0.1 s; measured with a 0.2 m
-  // step in 0.5 m of water, square lattice). A side face's particles do follow the run beside them.
+  // horizontally); above a run's top they take its top shift. One in a run's own column below its bottom (the floor,
+  // a step the run stands on, and beside a step the layers of its side face, which lie in the columns of the water
+  // on the step) is that run's support and keeps its place: each run is compressed up from its support, so the gap
+  // between them is already the compressed one. Measured with a 0.2 m step in 0.5 m of water (square lattice,
+  // dp = 0.01, the default method keys), at the water on the step beside its corner, t = 0:
+  //  * every boundary particle taking the nearest spanning run's shift (before): the step's top rows took the deeper
+  //    run's, dropped 0.9 mm from the water on them, which started at n = 0.943 n0 and zero pressure; the corner
+  //    collapsed at t = 0.089 s;
+  //  * only an upward-facing face's particles kept in place, the side face following the deep run beside it: the
+  //    corner's two faces then part by 1.09 dp, the water beside the corner starts at n = 0.990 n0 and zero pressure,
+  //    and the corner collapsed at 0.040 s;
+  //  * this rule: the water on the step starts at its depth's number density (tests/test_hydrostatic_start.cpp); the
+  //    side face stands up to 0.09 dp off the rows of the deep run beside it, whose water there starts below its
+  //    hydrostatic pressure (2456 Pa against 2947 Pa one column further out); the corner collapsed at 0.39 s, the rest
+  //    being the symmetric gradient's (fluid/gradient.hpp).
   auto supports_a_run = [&](std::size_t i) {
     const Vec<D>& x = P.position[i];
     for (const Run& run : runs) {

@@ -28,6 +28,8 @@ void expect_gap_reads_the_distance(const std::string& lattice, double edge_offse
     EXPECT_NEAR(gap.wetted_length, 0.3 - 4 * dp + 0.25 * dp, 1e-9) << lattice;
     EXPECT_NEAR(gap.mean / dp, moved_over_dp + edge_offset_over_dp, 0.01) << lattice << " moved " << moved_over_dp;
   }
+  // A face 2.5 dp inside the water: the search, from 2 dp behind the face, starts in water and finds no edge.
+  EXPECT_EQ(water_gap_along_outline(sim, box_below(2.5 * dp)).wetted_length, 0.0) << lattice;
   // A box beside the water, not touching it: no wetted face.
   const std::vector<Vec<2>> away = {Vec<2>(0.6, 0.0), Vec<2>(0.8, 0.0), Vec<2>(0.8, 0.1), Vec<2>(0.6, 0.1)};
   EXPECT_EQ(water_gap_along_outline(sim, away).wetted_length, 0.0);
