@@ -178,24 +178,21 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
   //    side face stands up to 0.09 dp off the rows of the deep run beside it, whose water there starts below its
   //    hydrostatic pressure (2456 Pa against 2947 Pa one column further out); the corner collapsed at 0.39 s, the rest
   //    being the symmetric gradient's (fluid/gradient.hpp).
-  auto supports_a_run = [&](std::size_t i) {
-    const Vec<D>& x = P.position[i];
-    for (const Run& run : runs) {
-      double h2 = 0.0;
-      for (int k = 0; k < up; ++k) h2 += (run.base[k] - x[k]) * (run.base[k] - x[k]);
-      if (h2 < 0.25 * dp * dp && x[up] < run.y_nominal.front() - 0.5 * dp) return true;
-    }
-    return false;
-  };
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] == Kind::fluid || P.body[i] >= 0) continue;
     const Vec<D>& x = P.position[i];
-    if (supports_a_run(i)) continue;
     double best_h2 = re * re, shift = 0.0;
     for (const Run& run : runs) {
       double h2 = 0.0;
       for (int k = 0; k < up; ++k) h2 += (run.base[k] - x[k]) * (run.base[k] - x[k]);
-      if (h2 >= best_h2 - 1e-12 * dp * dp || x[up] < run.y_nominal.front() - 0.5 * dp) continue;
+      if (x[up] < run.y_nominal.front() - 0.5 * dp) {
+        if (h2 < 0.25 * dp * dp) {  // below the bottom of a run in its own column: that run's support
+          shift = 0.0;
+          break;
+        }
+        continue;
+      }
+      if (h2 >= best_h2 - 1e-12 * dp * dp) continue;
       best_h2 = h2;
       const auto& yn = run.y_nominal;
       const std::size_t above = std::upper_bound(yn.begin(), yn.end(), x[up]) - yn.begin();
