@@ -18,6 +18,7 @@ void read_method(const YAML::Node& r, MethodOptions& o) {
   o.gamma = m["gamma"].as<double>();
   o.free_surface_beta = m["free_surface_beta"].as<double>();
   o.clamp_negative_pressure = m["clamp_negative_pressure"].as<bool>();
+  o.surface_pressure = surface_pressure_names.parse(m["surface_pressure"].as<std::string>());
   o.wall_slip = wall_slip_names.parse(m["wall_slip"].as<std::string>());
   o.artificial_viscosity = m["artificial_viscosity"].as<double>();
   o.collision_distance_over_dp = m["collision_distance"].as<double>();

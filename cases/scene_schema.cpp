@@ -158,6 +158,9 @@ Schema method_schema() {
        {"free_surface_beta",
         S::number("free-surface threshold: n < beta n0 gets zero pressure", "", 0.97, 0.0, 1.0, true, false)},
        {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
+       {"surface_pressure", S::choice("pressure of free-surface particles (n < beta n0): zero, or extrapolated from "
+                                      "the bulk neighbours with the hydrostatic head (fluid/free_surface_pressure.hpp)",
+                                      surface_pressure_names.names(), std::string(to_string(SurfacePressure::zero)))},
        {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
                                wall_slip_names.names(), std::string(to_string(WallSlip::no_slip)))},

@@ -150,7 +150,17 @@ void Simulation<D>::compute_pressure() {
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
-  copy_to_ghosts(P, P.pressure);  // boundary pressure below reads the fluid's, ghosts' included
+  copy_to_ghosts(P, P.pressure);
+  if (options.surface_pressure == SurfacePressure::extrapolated) {
+    // Surface particles read only bulk ones, whose pressures are final: one pass, in any order.
+    const auto is_bulk = [&](std::uint32_t b) { return P.number_density[b] >= surface_n; };
+    parallel_for(n, [&](std::size_t i) {
+      if (P.kind[i] == Kind::fluid && P.number_density[i] < surface_n)
+        P.pressure[i] = extrapolated_surface_pressure<D>(i, P, list_, r_e, options.gravity, is_bulk);
+    });
+    copy_to_ghosts(P, P.pressure);
+  }
+  // boundary pressure below reads the fluid's, ghosts' included
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] == Kind::fluid) return;
     // The head between a boundary particle and the fluid follows g - a_w: a wall that accelerates into the water

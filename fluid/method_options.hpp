@@ -1,5 +1,6 @@
 #pragma once
 // The numerical method's settings (scene keys `particle_spacing`, `lattice` and `method.*`).
+#include "fluid/free_surface_pressure.hpp"
 #include "fluid/gradient.hpp"
 #include "fluid/lattice.hpp"
 #include "fluid/name_table.hpp"
@@ -27,6 +28,7 @@ struct MethodOptions {
   double sound_speed = 10.0;        // c0, m/s
   double free_surface_beta = 0.97;  // n < beta n0: free-surface particle, pressure set to zero
   bool clamp_negative_pressure = true;
+  SurfacePressure surface_pressure = SurfacePressure::zero;
   WallSlip wall_slip = WallSlip::no_slip;
   ViscousScheme viscous_scheme = ViscousScheme::explicit_;
   double implicit_tolerance = 1e-8;  // relative residual of the semi-implicit viscous solve
