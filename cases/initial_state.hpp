@@ -14,6 +14,10 @@ inline constexpr auto initial_state_names = make_name_table<InitialState>(
     std::pair{InitialState::hydrostatic, "hydrostatic"}, std::pair{InitialState::settled, "settled"},
     std::pair{InitialState::lattice, "lattice"});
 
+// The default (scene key method.initial_state): settled, the start that leaves still water at rest on the
+// hexagonal lattice (fluid/method_options.hpp says why that lattice).
+inline constexpr InitialState default_initial_state = InitialState::settled;
+
 inline std::string_view to_string(InitialState s) { return initial_state_names.name(s); }
 
 }  // namespace slide::cases

@@ -48,7 +48,7 @@ struct SceneBuild {
   // Set by read_fluid_options.
   double dp = 0.0;
   bool hexagonal = false;
-  InitialState initial_state = InitialState::hydrostatic;
+  InitialState initial_state = default_initial_state;
   // Set by read_phases.
   ScenePhases phases;
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.

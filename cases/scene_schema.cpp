@@ -151,7 +151,7 @@ Schema method_schema() {
       "numerical method (weakly compressible MPS, seed eqs. 1-7)",
       {{"kernel_radius", S::number("kernel radius re in particle spacings", "dp", 2.1, 1.5, 5.0)},
        {"gradient", S::choice("pressure-gradient model (fluid/gradient.hpp)", gradient_model_names.names(),
-                              std::string(to_string(GradientModel::symmetric)))},
+                              std::string(to_string(MethodOptions{}.gradient)))},
        {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
        {"sound_speed",
         S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0, 0.0, inf)},
@@ -160,7 +160,7 @@ Schema method_schema() {
        {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
        {"surface_pressure", S::choice("pressure of free-surface particles (n < beta n0): zero, or extrapolated from "
                                       "the bulk neighbours with the hydrostatic head (fluid/free_surface_pressure.hpp)",
-                                      surface_pressure_names.names(), std::string(to_string(SurfacePressure::zero)))},
+                                      surface_pressure_names.names(), std::string(to_string(MethodOptions{}.surface_pressure)))},
        {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
                                wall_slip_names.names(), std::string(to_string(WallSlip::no_slip)))},
@@ -169,7 +169,7 @@ Schema method_schema() {
                                    "wall-layer particles the pressure of their own number density (dummies none); "
                                    "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
                                    "et al. 2012) (fluid/wall_pressure.hpp)",
-                                   wall_pressure_names.names(), std::string(to_string(WallPressure::mirror)))},
+                                   wall_pressure_names.names(), std::string(to_string(MethodOptions{}.wall_pressure)))},
        {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
                                           "(fluid/artificial_viscosity.hpp)",
                                           "", 0.0, 0.0, 1.0)},
@@ -182,7 +182,7 @@ Schema method_schema() {
                                    "(coupling/relaxation.hpp), for scenes whose water starts at rest (sediment "
                                    "regions settle as a fluid, their rheology starting at t = 0; deformable slides are "
                                    "held); lattice starts from the uncompressed lattice",
-                                   initial_state_names.names(), std::string(to_string(InitialState::hydrostatic)))},
+                                   initial_state_names.names(), std::string(to_string(default_initial_state)))},
        {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
        {"settling_damping",
         S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, inf, true)},
@@ -287,7 +287,7 @@ Schema make_schema() {
                              "the wall pressure must be extrapolated or number_density, the initial state lattice or "
                              "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
                              "lies dp/2 below the lowest point of the first body",
-                             lattice_kind_names.names(), std::string(to_string(LatticeKind::square)))},
+                             lattice_kind_names.names(), std::string(to_string(MethodOptions{}.lattice)))},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
        {"domain", domain_schema()},

@@ -75,6 +75,9 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
     // Periodic in x: the nearest image (a particle wrapped across the period's ends has not moved a period).
     if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
     out.largest_shift = std::max(out.largest_shift, shift.norm());
+    if (P.kind[i] != Kind::fluid) continue;
+    if (out.largest_shift_by_phase.size() <= P.phase[i]) out.largest_shift_by_phase.resize(P.phase[i] + 1, 0.0);
+    out.largest_shift_by_phase[P.phase[i]] = std::max(out.largest_shift_by_phase[P.phase[i]], shift.norm());
   }
   sim.set_velocity_damping(saved_rate);
   sim.set_rheology_suspended(false);

@@ -23,6 +23,7 @@ struct Relaxation {
   double largest_speed = 0.0;   // m/s, largest fluid speed reached while settling
   double residual_speed = 0.0;  // m/s, at the end, before the velocities were zeroed
   double largest_shift = 0.0;   // m, largest distance a fluid particle moved while settling
+  std::vector<double> largest_shift_by_phase;  // m, the same for each phase (index: Particles::phase)
 };
 
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the

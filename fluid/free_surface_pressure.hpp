@@ -25,8 +25,11 @@ inline std::string_view to_string(SurfacePressure s) { return surface_pressure_n
 // Why: a particle of the top row stands about dp / 2 below the water's edge, so its pressure is rho g dp / 2, not 0.
 // Given 0, the top row is supported only by the row below, through a one-sided sum that carries about half the
 // gradient; the rows below then hold the water's weight only with a steeper pressure near the top, and the
-// pressure line of the bulk reaches zero above the particles' edge (measured: +0.24 dp on the hexagonal lattice
-// with the variational gradient), which lifts every floating body by as much.
+// pressure line of the bulk reaches zero above the particles' edge, which lifts a floating body by as much. Measured
+// (floating boxes of 300-900 kg/m^3 placed at their drafts, 1 s at rest): mean draft error 0.82 % at dp 0.005 and
+// 1.73 % at dp 0.01, against 1.46 % and 2.59 % with zero.
+// Its limit: the head is hydrostatic, so it is right only where the water near the surface is at rest. Where the
+// surface is not level or the water accelerates (a released column's side) it adds pressure the flow does not have.
 template <int D, class IsBulk>
 double extrapolated_surface_pressure(std::size_t s, const Particles<D>& P, const NeighborList& nl, double re,
                                      const Vec<D>& gravity, const IsBulk& is_bulk) {

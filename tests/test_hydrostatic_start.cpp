@@ -29,6 +29,7 @@ fluid:
 walls:
   - name: tank
     points: [[0, 0.9], [0, 0], [0.4, 0], [0.4, 0.2], [0.6, 0.2], [0.6, 0], [1.0, 0], [1.0, 0.9]]
+lattice: square
 method:
   initial_state: hydrostatic
 )");

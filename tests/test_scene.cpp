@@ -52,6 +52,7 @@ TEST(Scene, PolygonRegionAndExplicitSoundSpeed) {
   write_file(dir / "s.yaml", R"(particle_spacing: 0.1
 end_time: 1
 gravity: [0, 0]
+lattice: square
 method: {sound_speed: 5, initial_state: lattice}
 fluid:
   phases: [{name: water}]
@@ -92,8 +93,8 @@ fluid:
 walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
 )";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"method: {initial_state: lattice}\n", "method.wall_pressure"},  // mirror is the default
-      {"method: {wall_pressure: extrapolated}\n", "method.initial_state"},  // hydrostatic is the default
+      {"method: {wall_pressure: mirror, initial_state: lattice}\n", "method.wall_pressure"},
+      {"method: {initial_state: hydrostatic}\n", "method.initial_state"},
   };
   for (const auto& [extra, key] : cases) {
     write_file(dir / "s.yaml", tank + extra);
@@ -151,6 +152,7 @@ fluid:
   regions: [{type: below_level, level: 0.5}]
 walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
 bodies: [{name: b, shape: {type: box, center: [0.5, 0.5], size: [0.2, 0.2]}, density: 500, during_settling: free}]
+lattice: square
 )";
   for (const auto& [extra, overrides] : std::vector<std::pair<std::string, std::vector<std::string>>>{
            {"method: {initial_state: hydrostatic}\n", {}},

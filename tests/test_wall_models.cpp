@@ -266,6 +266,7 @@ method:
   gradient: )" + gradient + "\n  wall_pressure: " + model + "\n  sound_speed: " + num(c0) + R"(
   clamp_negative_pressure: false
   initial_state: lattice
+lattice: square
 walls:
   - {name: tank, points: [[0, 0.3], [0, 0], [0.3, 0], [0.3, 0.3]]}
 )";
