@@ -27,7 +27,7 @@ inline std::string_view to_string(SurfacePressure s) { return surface_pressure_n
 // gradient; the rows below then hold the water's weight only with a steeper pressure near the top, and the
 // pressure line of the bulk reaches zero above the particles' edge, which lifts a floating body by as much. Measured
 // (floating boxes of 300-900 kg/m^3 placed at their drafts, 1 s at rest): mean draft error 0.82 % at dp 0.005 and
-// 1.73 % at dp 0.01, against 1.46 % and 2.59 % with zero.
+// 1.73 % at dp 0.01, against 1.45 % and 2.59 % with zero.
 // Its limit: the head is hydrostatic, so it is right only where the water near the surface is at rest. Where the
 // surface is not level or the water accelerates (a released column's side) it adds pressure the flow does not have.
 template <int D, class IsBulk>
