@@ -41,6 +41,10 @@ void build_channel(Simulation<2>& sim, const HbPoiseuille& exact, int across, Vi
   const double dp = 2.0 * H / across, K = exact.consistency;
   auto& o = sim.options;
   o.dp = dp;
+  // The square lattice's method (as cases/hb_poiseuille_2d.yaml): the particles below are laid on that lattice.
+  o.lattice = LatticeKind::square;
+  o.gradient = GradientModel::symmetric;
+  o.wall_pressure = WallPressure::mirror;
   o.viscous_scheme = scheme;
   o.gravity = Vec<2>(G / rho, 0.0);
   o.sound_speed = 10.0 * exact.max_velocity();  // Mach 0.1
