@@ -2,7 +2,7 @@
 // Pressure of free-surface particles (number density below beta n0).
 #include <string_view>
 
-#include "fluid/kernel.hpp"
+#include "fluid/continued_pressure.hpp"
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
@@ -19,8 +19,8 @@ inline constexpr auto surface_pressure_names = make_name_table<SurfacePressure>(
 
 inline std::string_view to_string(SurfacePressure s) { return surface_pressure_names.name(s); }
 
-// Pressure of a free-surface particle s from its bulk fluid neighbours b (is_bulk(b)), after Adami, Hu & Adams 2012,
-// eq. 27, applied at the free surface:
+// Pressure of a free-surface particle s from its bulk fluid neighbours b (is_bulk(b)), continued along g as a wall's
+// is (fluid/continued_pressure.hpp, after Adami, Hu & Adams 2012, eq. 27), never below zero:
 //   p_s = max(0, ( sum_b p_b W_sb + g . sum_b rho_b (r_s - r_b) W_sb ) / sum_b W_sb ),   0 with no bulk neighbour.
 // Why: a particle of the top row stands about dp / 2 below the water's edge, so its pressure is rho g dp / 2, not 0.
 // Given 0, the top row is supported only by the row below, through a one-sided sum that carries about half the
@@ -33,22 +33,8 @@ inline std::string_view to_string(SurfacePressure s) { return surface_pressure_n
 template <int D, class IsBulk>
 double extrapolated_surface_pressure(std::size_t s, const Particles<D>& P, const NeighborList& nl, double re,
                                      const Vec<D>& gravity, const IsBulk& is_bulk) {
-  const auto& x = P.position;
-  const double re2 = re * re;
-  double sum_w = 0.0, sum_pw = 0.0, sum_head = 0.0;
-  for (const std::uint32_t* q = nl.begin(s); q != nl.end(s); ++q) {
-    const std::uint32_t b = *q;
-    if (P.kind[b] != Kind::fluid || !is_bulk(b)) continue;
-    const Vec<D> r_sb = x[s] - x[b];
-    const double r2 = r_sb.squaredNorm();
-    if (r2 >= re2) continue;
-    const double weight = kernel_weight(std::sqrt(r2), re);
-    sum_w += weight;
-    sum_pw += P.pressure[b] * weight;
-    sum_head += P.density[b] * gravity.dot(r_sb) * weight;
-  }
-  if (sum_w <= 0.0) return 0.0;
-  const double p = (sum_pw + sum_head) / sum_w;
+  double p = 0.0;
+  continued_pressure<D>(s, P, nl, re, gravity, is_bulk, p);
   return p > 0.0 ? p : 0.0;
 }
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "fluid/continued_pressure.hpp"
 #include "fluid/kernel.hpp"
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
@@ -21,31 +22,17 @@ inline constexpr auto wall_pressure_names = make_name_table<WallPressure>(
 
 inline std::string_view to_string(WallPressure w) { return wall_pressure_names.name(w); }
 
-// Pressure of a boundary particle (wall or dummy) extrapolated from its fluid neighbours
-// (Adami, Hu & Adams 2012, J. Comput. Phys. 231, eq. 27):
-//   p_w = ( sum_f p_f W_wf + (g - a_w) . sum_f rho_f (r_w - r_f) W_wf ) / sum_f W_wf,
-// a_w the wall's acceleration; `head_acceleration` is g - a_w (g for a wall at rest).
-// It continues the fluid's pressure field, hydrostatic part included, into the wall, so the pressure gradient
-// near a wall sees a complete and consistent neighbourhood. A boundary particle with no fluid neighbour has p = 0.
+// Pressure of a boundary particle (wall or dummy) extrapolated from its fluid neighbours: the fluid's pressure
+// continued into the wall along g - a_w, a_w the wall's acceleration (`head_acceleration`; g for a wall at rest),
+// fluid/continued_pressure.hpp (Adami, Hu & Adams 2012, eq. 27). It continues the fluid's pressure field,
+// hydrostatic part included, into the wall, so the pressure gradient near a wall sees a complete and consistent
+// neighbourhood. A boundary particle with no fluid neighbour has p = 0.
 template <int D>
 double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const NeighborList& nl, double re,
                                   const Vec<D>& head_acceleration) {
-  const auto& x = P.position;
-  const double re2 = re * re;
-  double sum_w = 0.0, sum_pw = 0.0, sum_head = 0.0;
-  for (const std::uint32_t* q = nl.begin(w); q != nl.end(w); ++q) {
-    const std::uint32_t f = *q;
-    if (P.kind[f] != Kind::fluid) continue;
-    const Vec<D> r_wf = x[w] - x[f];
-    const double r2 = r_wf.squaredNorm();
-    if (r2 >= re2) continue;
-    const double weight = kernel_weight(std::sqrt(r2), re);
-    sum_w += weight;
-    sum_pw += P.pressure[f] * weight;
-    sum_head += P.density[f] * head_acceleration.dot(r_wf) * weight;
-  }
-  if (sum_w <= 0.0) return 0.0;
-  return (sum_pw + sum_head) / sum_w;
+  double p = 0.0;
+  continued_pressure<D>(w, P, nl, re, head_acceleration, [](std::uint32_t) { return true; }, p);
+  return p;
 }
 
 // How much fluid surrounds a boundary particle's mirror image, relative to a full lattice neighbourhood (capped at 1):
