@@ -156,7 +156,7 @@ Schema method_schema() {
        {"sound_speed",
         S::number("numerical sound speed c0; 0 = 10 sqrt(g H) of the deepest water", "m/s", 0.0, 0.0, inf)},
        {"free_surface_beta",
-        S::number("free-surface threshold: n < beta n0 gets zero pressure", "", 0.97, 0.0, 1.0, true, false)},
+        S::number("free-surface threshold: n < beta n0 is a free-surface particle (its pressure: method.surface_pressure)", "", 0.97, 0.0, 1.0, true, false)},
        {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
        {"surface_pressure", S::choice("pressure of free-surface particles (n < beta n0): zero, or extrapolated from "
                                       "the bulk neighbours with the hydrostatic head (fluid/free_surface_pressure.hpp)",

@@ -167,7 +167,7 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
   // a step the run stands on, and beside a step the layers of its side face, which lie in the columns of the water
   // on the step) is that run's support and keeps its place: each run is compressed up from its support, so the gap
   // between them is already the compressed one. Measured with a 0.2 m step in 0.5 m of water (square lattice,
-  // dp = 0.01, the default method keys), at the water on the step beside its corner, t = 0:
+  // dp = 0.01, symmetric gradient, mirror walls), at the water on the step beside its corner, t = 0:
   //  * every boundary particle taking the nearest spanning run's shift (before): the step's top rows took the deeper
   //    run's, dropped 0.9 mm from the water on them, which started at n = 0.943 n0 and zero pressure; the corner
   //    collapsed at t = 0.089 s;

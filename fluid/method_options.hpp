@@ -38,7 +38,7 @@ struct MethodOptions {
   GradientModel gradient = GradientModel::variational;
   double gamma = 7.0;
   double sound_speed = 10.0;        // c0, m/s
-  double free_surface_beta = 0.97;  // n < beta n0: free-surface particle, pressure set to zero
+  double free_surface_beta = 0.97;  // n < beta n0: free-surface particle (pressure: surface_pressure)
   bool clamp_negative_pressure = true;
   SurfacePressure surface_pressure = SurfacePressure::zero;
   WallSlip wall_slip = WallSlip::no_slip;

@@ -395,7 +395,7 @@ TEST(LongWallModels, ExtrapolatedAtHalfTheSpacing) {
 // bottom +1.07 / +1.32 %, side 2.9 / 2.7 %, fluid 4.5 / 4.6 %, tilt -1.9 / -0.7 % (side and fluid errors not
 // shrinking with dp). That is the square lattice's doing, not the model's: extrapolated on the square lattice
 // (DISABLED_ExtrapolatedOnTheSquareLattice below) does the same. Where mirror is useful: flows on the square lattice
-// (the default lattice, and the dam break's), where its wall pressure at a released column's wall is the extrapolated
+// (the dam break's and the Poiseuille channel's), where its wall pressure at a released column's wall is the extrapolated
 // model's within 0.03 % of rho g h (measured a/20 to a/80: wall rms 0.39 / 0.16 / 0.30 %, force +2.7 / -1.2 / -2.6 %,
 // fluid rms 0.60 / 0.33 / 0.23 %).
 TEST(WallModels, MirrorGivesTheReleasedColumnsWallPressure) {
