@@ -57,7 +57,7 @@ void check_lattice_choices(SceneBuild& b) {
   if (!b.hexagonal) return;
   if (b.options().wall_pressure == WallPressure::mirror)
     throw SceneError("method.wall_pressure", "the mirror model needs lattice: square (its images assume the square "
-                                             "lattice); use extrapolated or number_density with lattice: hexagonal");
+                                             "lattice); use extrapolated with lattice: hexagonal");
   if (b.initial_state == InitialState::hydrostatic)
     throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
                                              "compresses it); the column-wise hydrostatic start needs lattice: square");

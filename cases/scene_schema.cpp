@@ -165,8 +165,7 @@ Schema method_schema() {
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
                                wall_slip_names.names(), std::string(to_string(WallSlip::no_slip)))},
        {"wall_pressure", S::choice("pressure of boundary particles: mirror takes the fluid's pressure at the "
-                                   "particle's mirror image plus the hydrostatic head; number_density gives "
-                                   "wall-layer particles the pressure of their own number density (dummies none); "
+                                   "particle's mirror image plus the hydrostatic head (square lattice only); "
                                    "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
                                    "et al. 2012) (fluid/wall_pressure.hpp)",
                                    wall_pressure_names.names(), std::string(to_string(MethodOptions{}.wall_pressure)))},
@@ -253,7 +252,8 @@ Schema profiles_schema() {
 Schema surge_schema() {
   return S::map(
       "dam-break diagnostics (surge_front.csv): front of the largest connected body of water (particles closer "
-      "than 2 dp linked) measured from the wall face, and the water height at that wall",
+      "than 2 dp linked) measured from the wall face, and the water height at that wall (the water's edge fitted over "
+      "re to re + a/4 from the wall, read at the wall; coupling/surge_front.hpp)",
       {{"enabled", S::boolean("write surge_front.csv", false)},
        {"wall_face_x", S::number("x of the wall face the column stands against", "m", 0.0)},
        {"floor_y", S::number("y of the floor face", "m", 0.0)},
@@ -284,7 +284,7 @@ Schema make_schema() {
        {"lattice", S::choice("lattice the particles start on, one particle per dp^2 either way: square, or "
                              "hexagonal (nearest spacing 1.0746 dp), the stable packing that still water needs to "
                              "stay at rest; with hexagonal, walls are cut from the same lattice (layers unused), "
-                             "the wall pressure must be extrapolated or number_density, the initial state lattice or "
+                             "the wall pressure must be extrapolated, the initial state lattice or "
                              "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
                              "lies dp/2 below the lowest point of the first body",
                              lattice_kind_names.names(), std::string(to_string(MethodOptions{}.lattice)))},

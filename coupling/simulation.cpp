@@ -170,10 +170,8 @@ void Simulation<D>::compute_pressure() {
     double p = 0.0;
     if (options.wall_pressure == WP::extrapolated)
       p = extrapolated_wall_pressure<D>(i, P, list_, r_e, head_acceleration);
-    else if (options.wall_pressure == WP::mirror)
+    else
       p = mirror_wall_pressure<D>(i, P, grid_, options.dp, head_acceleration);
-    else if (P.kind[i] == Kind::wall && P.number_density[i] >= surface_n)
-      p = eos.pressure(P.number_density[i], P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });

@@ -3,6 +3,7 @@
 #include <numeric>
 #include <vector>
 
+#include "coupling/free_surface_gauge.hpp"
 #include "coupling/simulation.hpp"
 
 namespace slide {
@@ -15,12 +16,35 @@ struct SurgeFront {
 
 // Dam-break front (issue 3): the largest connected body of water, particles linked when closer than 2 dp; its
 // front is its largest particle x plus half a spacing (the particle's own extent), measured from the wall face.
-// The height at the wall is the highest particle of that body within one spacing of the wall face, plus half a
-// spacing, above the floor face. Union-find over the neighbour list; ties between equal bodies go to the one
+// The height at the wall is the water's edge (free_surface_elevation: where the kernel-interpolated volume fraction
+// is 1/2) on 8 vertical lines between one kernel radius re and re + band out from the wall face, fitted by a straight
+// line (least squares) and read at the face, above the floor face (band: a quarter of the column's width in the
+// dam break; with no width given, the edge at re alone). Why: the edge moves continuously with the particles, unlike the highest particle beside the wall,
+// which jumps by a spacing whenever one particle leaves the wall (measured, a/40: free against no-slip walls changed
+// it by 2.3 % of 2a at T = 1.33 in one such jump); beyond re the wall's missing neighbours do not thin the
+// interpolation; and the fit over a band averages out single particles that cling to the wall above the water.
+// NaN where no line meets water. Union-find over the neighbour list; ties between equal bodies go to the one
 // holding the lowest particle id, so the result does not depend on particle order. Periodic ghosts are not counted:
 // a link to a ghost links to its source (water connected across the period's ends is one body).
+// The straight line fitted to the water's edge at 8 points from re to re + band out from the wall, read at the wall.
 template <int D>
-SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, double floor_y) {
+double water_height_at_wall(const Simulation<D>& sim, double wall_face_x, double band) {
+  const int lines = band > 0.0 ? 8 : 1;
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (int k = 0; k < lines; ++k) {
+    Vec<D> point = Vec<D>::Zero();
+    const double x = sim.re() + (lines > 1 ? band * k / (lines - 1.0) : 0.0);  // from the wall face
+    point[0] = wall_face_x + x;
+    const double y = free_surface_elevation<D>(sim, point);
+    if (std::isnan(y)) return y;
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double slope = lines > 1 ? (lines * sxy - sx * sy) / (lines * sxx - sx * sx) : 0.0;
+  return (sy - slope * sx) / lines;
+}
+
+template <int D>
+SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, double floor_y, double band) {
   const auto& P = sim.particles;
   const auto& nl = sim.neighbors();
   const double dp = sim.options.dp, link2 = 4.0 * dp * dp;
@@ -58,14 +82,11 @@ SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, dou
   SurgeFront out;
   if (best == n) return out;
   out.body_size = size[best];
-  double x_max = -1e300, y_wall = floor_y - 0.5 * dp;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::fluid || find(static_cast<std::uint32_t>(i)) != best) continue;
-    x_max = std::max(x_max, P.position[i][0]);
-    if (P.position[i][0] - wall_face_x < dp) y_wall = std::max(y_wall, P.position[i][D - 1]);
-  }
+  double x_max = -1e300;
+  for (std::size_t i = 0; i < n; ++i)
+    if (P.kind[i] == Kind::fluid && find(static_cast<std::uint32_t>(i)) == best) x_max = std::max(x_max, P.position[i][0]);
   out.front = x_max + 0.5 * dp - wall_face_x;
-  out.wall_height = y_wall + 0.5 * dp - floor_y;
+  out.wall_height = water_height_at_wall<D>(sim, wall_face_x, band) - floor_y;
   return out;
 }
 

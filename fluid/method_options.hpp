@@ -25,7 +25,7 @@ inline std::string_view to_string(ViscousScheme s) { return viscous_scheme_names
 //    the earlier defaults (square, symmetric, mirror, hydrostatic) a tall floating box collapsed at its convex
 //    corners (n = 1.55 n0 at 0.21 s).
 //  * wall_pressure extrapolated: the one model that passes the exact wall tests (still tank, tank accelerated
-//    sideways, released column at t = 0+; tests/test_wall_models.cpp); mirror and number_density miss them by 3-11 %.
+//    sideways, released column at t = 0+; tests/test_wall_models.cpp); mirror misses them by 3-5 %.
 //  * surface_pressure zero: extrapolating the bulk's pressure with the hydrostatic head is right only where the water
 //    near its surface is at rest (fluid/free_surface_pressure.hpp); with it a released column's wall force is
 //    4.9 % / 7.4 % off at a/20 / a/40 (zero: 2.4 % / 1.3 %, tests/test_wall_models.cpp) and an accelerated tank's

@@ -1,8 +1,9 @@
 // Dam break against Martin & Moyce (1952): the surge front Z = front / a against T = t sqrt(2 g / a), mean relative
 // error over the reference points with 0 < T <= 3 (all four transcriptions) below 12 % at a/20 (the shipped
-// resolution), a/40 and a/80.
+// resolution), a/40 and a/80. And the wall condition of the viscous term against the run-to-run spread.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -81,6 +82,86 @@ double front_error(int a_over_dp) {
 TEST(DamBreak, FrontErrorAtShippedResolution) { EXPECT_LT(front_error(20), 0.12); }
 TEST(DamBreak, FrontErrorAtA40) { EXPECT_LT(front_error(40), 0.12); }
 TEST(DamBreak, FrontErrorAtA80) { EXPECT_LT(front_error(80), 0.12); }
+
+// The series averaged over a window of width `window` centred on each of 601 points of T in [0, T_max] (linearly
+// interpolated between samples; the window is cut at the ends).
+std::vector<double> smoothed(const Series& s, double T_max, double window) {
+  constexpr int points = 601;
+  std::vector<double> T(points), v(points), out(points);
+  for (int k = 0; k < points; ++k) T[k] = T_max * k / (points - 1), v[k] = interpolate(s, T[k]);
+  for (int k = 0; k < points; ++k) {
+    double sum = 0.0;
+    int count = 0;
+    for (int m = 0; m < points; ++m)
+      if (std::abs(T[m] - T[k]) <= 0.5 * window) sum += v[m], ++count;
+    out[k] = sum / count;
+  }
+  return out;
+}
+
+// Largest difference of two smoothed series, absolute or relative to the first.
+double largest_difference(const std::vector<double>& a, const std::vector<double>& b, bool relative) {
+  double d = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) d = std::max(d, std::abs(b[k] - a[k]) / (relative ? a[k] : 1.0));
+  return d;
+}
+
+// The dam break on the default method (hexagonal lattice, variational gradient, extrapolated walls), settled behind a
+// gate that is lifted at t = 0, at a/40 to T = 3.05.
+constexpr const char* gated_dam_break = R"(description: Martin & Moyce dam break on the default method, behind a gate
+particle_spacing: 0.00142875
+end_time: 0.1645
+fluid:
+  phases:
+    - {name: water, density: 1000, rheology: {model: newtonian, viscosity: 1.0e-3}}
+  regions:
+    - {type: rectangle, min: [0, 0], max: [0.05715, 0.1143]}
+walls:
+  - {name: gate, points: [[0.05715, -0.03], [0.05715, 0.17145]], gate: true}
+  - {name: tank, points: [[0, 0.17145], [0, 0], [0.4572, 0], [0.4572, 0.17145]]}
+output: {snapshots: false, gauge_interval: 0.002}
+diagnostics:
+  surge_front: {enabled: true, wall_face_x: 0, floor_y: 0, column_width: 0.05715}
+)";
+
+// Issue 12: with water's viscosity the no-slip boundary layer sqrt(nu t) is a fraction of a spacing here, so free-
+// and no-slip walls should give the same flow. But the water height at the wall and the front are chaotic at the
+// particles' scale: a change of g by 1e-12 of itself changes them by 2-6 % of 2a and of Z at T <= 3 (measured
+// here, a/40, point by point; 1e-14 does the same), so no two runs can agree within 1 % point by point. What can be
+// asserted: over T <= 3, averaged over windows of Delta T = 0.5, the free-slip run differs from the no-slip run by no
+// more than the larger of two no-slip runs with g changed by +-1e-12 do. Measured (stop 20): height 1.40 % of 2a
+// against 3.36 / 2.26 %, front 0.96 % against 1.66 / 0.44 % (relative). On the shipped square-lattice method
+// (cases/dam_break_2d.yaml) the same comparison fails: free slip moves its smoothed front by 6.30 % against a spread
+// of 1.82 / 1.92 %, a wall effect that method has and the default does not (its height: 3.37 % against 0.86 / 3.78 %).
+// About 4 minutes of one core (each run settles for 1 s first).
+TEST(DamBreak, WallSlipChangesNoMoreThanTheRunToRunSpread) {
+  const fs::path dir = fresh_directory("dam_break_slip");
+  write_file(dir / "gated.yaml", gated_dam_break);
+  auto run = [&](const std::string& name, const std::string& sets) {
+    const fs::path out = dir / name;
+    const CommandResult r = run_command(slide_binary() + " run " + (dir / "gated.yaml").string() + " --quiet --out " +
+                                        out.string() + sets);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    const double T_max = 3.0, window = 0.5;
+    return std::pair{smoothed(read_columns(out / "surge_front.csv", "T", "H_over_2a"), T_max, window),
+                     smoothed(read_columns(out / "surge_front.csv", "T", "Z"), T_max, window)};
+  };
+  const auto no_slip = run("no_slip", "");
+  const auto free_slip = run("free_slip", " --set method.wall_slip=free_slip");
+  const auto heavier = run("g_plus", " --set gravity=[0,-9.81000000001]");
+  const auto lighter = run("g_minus", " --set gravity=[0,-9.80999999999]");
+  const double height_slip = largest_difference(no_slip.first, free_slip.first, false);
+  const double height_spread = std::max(largest_difference(no_slip.first, heavier.first, false),
+                                        largest_difference(no_slip.first, lighter.first, false));
+  const double front_slip = largest_difference(no_slip.second, free_slip.second, true);
+  const double front_spread = std::max(largest_difference(no_slip.second, heavier.second, true),
+                                       largest_difference(no_slip.second, lighter.second, true));
+  std::printf("dam break a/40, T <= 3, smoothed over Delta T = 0.5: free against no slip: height %.2f %% of 2a, "
+              "front %.2f %%; g +-1e-12: height %.2f %%, front %.2f %%\n",
+              100 * height_slip, 100 * front_slip, 100 * height_spread, 100 * front_spread);
+  EXPECT_LE(height_slip, height_spread);
+  EXPECT_LE(front_slip, front_spread);
+}
 
 }  // namespace
 }  // namespace slide::testing

@@ -1,12 +1,13 @@
-// The three wall-pressure models (method.wall_pressure: mirror, extrapolated, number_density; fluid/wall_pressure.hpp)
+// The wall-pressure models (method.wall_pressure: mirror, extrapolated; fluid/wall_pressure.hpp)
 // against exact answers (issue 12, item 2): a still tank, a tank accelerated sideways at a constant rate (in its frame,
 // tilted gravity), and a water column at the instant it is released.
 //
 // What they found (figures with each test below): extrapolated, on the hexagonal lattice the still water needs,
 // passes all three at both spacings. mirror runs only on the square lattice, where the tanks fail (pressure noise
 // 3-5 % of rho g L and side walls 2-3 %, not shrinking with dp) for lack of the stable packing, as extrapolated does
-// there too; on the released column it equals extrapolated. number_density fails all three (walls 8-11 % off in the
-// tanks, not converging; the column's wall force 6-15 % low).
+// there too; on the released column it equals extrapolated. A third model, classic MPS's number_density, failed all
+// three (walls 8-11 % off in the tanks, not converging; the column's wall force 6-15 % low) and was removed; its
+// figures are kept below.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -94,7 +95,7 @@ TEST(TiltedHydrostatic, SurfaceIsANormalPlaneAndKeepsTheWatersArea) {
 // settles 6 s: minutes on one core at dp 0.01), with the shipped case's method: variational gradient, settled start
 // at the gentle damping 3 /s (here 2 s: some 20 acoustic periods of the depth and 10 damping times). The water is
 // placed under the tilted surface already (a polygon), so settling only compresses it. Lattice: hexagonal for
-// extrapolated and number_density (the stable packing), square for mirror (its images assume the square lattice;
+// extrapolated (the stable packing), square for mirror (its images assume the square lattice;
 // the hexagonal lattice refuses it).
 constexpr double tank_width = 0.4, tank_depth = 0.2;
 
@@ -409,20 +410,15 @@ TEST(LongWallModels, DISABLED_MirrorFigures) {
   run_column("mirror", 0.00125);
 }
 
-// number_density (the wall layer's pressure from its own number density, dummies none: classic MPS) fails the wall
-// tests; its tank errors do not shrink with dp (the wall layer sees water on one side only), the column's shrink at
-// first order. Measured, dp 0.01 / 0.005 m:
+// The removed number_density model (the wall layer's pressure from its own number density, dummies none: classic
+// MPS; issue 12) failed the wall tests; its tank errors did not shrink with dp (the wall layer sees water on one side
+// only), the column's shrank at first order. Measured at stop 18, dp 0.01 / 0.005 m:
 //   still tank       bottom -8.4 / -9.2 %, side rms 9.6 / 10.8 %, fluid rms 4.5 / 3.5 %, zero plane -0.06 / +0.06 dp
 //   a/g = 0.1        bottom -8.1 / -8.9 %, side rms 10.0 / 11.1 %, fluid rms 4.5 / 3.5 %, tilt -2.0 / +1.1 %
 //   a/g = 0.2        bottom -7.7 / -8.7 %, side rms 10.0 / 11.5 %, fluid rms 4.6 / 3.6 %, tilt +0.5 / +0.1 %
 //   column a/20, a/40, a/80: wall rms 2.6 / 1.8 / 0.9 %, wall max 7.0 / 4.9 / 3.6 %, force -15 / -10 / -5.9 %,
 //                    fluid rms 2.6 / 1.6 / 0.6 % (of rho g h)
-// (its fluid's fitted gradient and the surface's tilt are right: what it gets wrong is the wall's own pressure).
-TEST(LongWallModels, DISABLED_NumberDensityFigures) {
-  for (const double a : {0.0, 0.1, 0.2})
-    for (const double dp : {0.01, 0.005}) run_tank("number_density", dp, a);
-  for (const double dp : {0.005, 0.0025, 0.00125}) run_column("number_density", dp);
-}
+// (its fluid's fitted gradient and the surface's tilt were right: what it got wrong was the wall's own pressure).
 
 // The control: extrapolated on the square lattice (dp 0.01 / 0.005): still tank bottom -0.75 / -0.02 %, side rms
 // 2.4 / 2.0 %, fluid rms 4.0 / 3.2 %; a/g = 0.1: bottom +0.13 / +0.34 %, side 2.6 / 1.6 %, fluid 3.9 / 4.4 %, tilt

@@ -88,7 +88,7 @@ void RunOutputs::sample() {
   }
   if (front_) {
     const auto& sf = scene_.surge_front;
-    const SurgeFront f = measure_surge_front<2>(sim_, sf.wall_face_x, sf.floor_y);
+    const SurgeFront f = measure_surge_front<2>(sim_, sf.wall_face_x, sf.floor_y, 0.25 * sf.column_width);
     const double a = sf.column_width, g = -sim_.options.gravity[1];
     const double T = a > 0 ? sim_.time() * std::sqrt(2.0 * g / a) : NAN;
     front_->add_row({sim_.time(), f.front, f.wall_height, T, a > 0 ? f.front / a : NAN,
