@@ -12,6 +12,7 @@
 
 #include "cases/body_choices.hpp"
 #include "cases/body_model.hpp"
+#include "cases/csv_table.hpp"
 #include "cases/scene_build.hpp"
 #include "fluid/basal_friction.hpp"
 #include "fluid/walls.hpp"
@@ -19,43 +20,25 @@
 namespace slide::cases {
 namespace {
 
-std::vector<std::string> split_csv_line(const std::string& l) {
-  std::vector<std::string> out;
-  std::stringstream ss(l);
-  std::string c;
-  while (std::getline(ss, c, ',')) out.push_back(c);
-  return out;
-}
-
 // Reads a prescribed-motion series: a CSV with a header naming at least time, x, y, angle (vx, vy, omega and body
 // optional), as bodies.csv has them.
 rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, const std::string& body,
                                            const std::string& key) {
-  std::ifstream in(file);
-  if (!in) throw SceneError(key, "cannot read " + file.string());
-  std::string line;
-  std::vector<std::string> header;
-  while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#') {
-      header = split_csv_line(line);
-      break;
-    }
-  auto col = [&](const std::string& name) -> int {
-    for (std::size_t k = 0; k < header.size(); ++k)
-      if (header[k] == name) return static_cast<int>(k);
-    return -1;
-  };
-  const int ct = col("time"), cx = col("x"), cy = col("y"), ca = col("angle"), cvx = col("vx"), cvy = col("vy"),
-            cw = col("omega"), cb = col("body");
+  CsvTable t;
+  try {
+    t = read_csv(file);
+  } catch (const std::runtime_error&) {
+    throw SceneError(key, "cannot read " + file.string());
+  }
+  const int ct = t.find_column("time"), cx = t.find_column("x"), cy = t.find_column("y"),
+            ca = t.find_column("angle"), cvx = t.find_column("vx"), cvy = t.find_column("vy"),
+            cw = t.find_column("omega"), cb = t.find_column("body");
   if (ct < 0 || cx < 0 || cy < 0 || ca < 0)
     throw SceneError(key, file.string() + ": the header must name the columns time, x, y and angle");
   const bool has_velocity = cvx >= 0 && cvy >= 0 && cw >= 0;
   std::vector<rigid::MotionSample> samples;
-  long row = 1;
-  while (std::getline(in, line)) {
-    ++row;
-    if (line.empty() || line[0] == '#') continue;
-    const auto f = split_csv_line(line);
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    const auto& f = t.rows[k];
     if (cb >= 0 && (cb >= int(f.size()) || f[cb] != body)) continue;
     try {
       rigid::MotionSample m;
@@ -70,7 +53,7 @@ rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, co
       if (!samples.empty() && m.time <= samples.back().time) continue;
       samples.push_back(m);
     } catch (const std::exception&) {
-      throw SceneError(key, fmt::format("{}: row {} is not numeric", file.string(), row));
+      throw SceneError(key, fmt::format("{}: row {} is not numeric", file.string(), t.line_numbers[k]));
     }
   }
   if (samples.size() < 2)

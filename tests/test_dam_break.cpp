@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
+#include "cases/csv_table.hpp"
 #include "tests/cli_helpers.hpp"
+#include "tools/measures/dam_break_front.hpp"
+#include "tools/measures/series.hpp"
 
 namespace slide::testing {
 namespace {
@@ -19,38 +21,12 @@ struct Series {
   std::vector<double> T, Z;
 };
 
-// Reads two named columns of a CSV file (lines starting with '#' are comments).
 Series read_columns(const fs::path& file, const std::string& t_column, const std::string& z_column) {
-  std::ifstream in(file);
-  std::string line;
-  std::vector<std::string> header;
-  Series s;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    auto at = [&](const std::string& name) {
-      for (std::size_t k = 0; k < header.size(); ++k)
-        if (header[k] == name) return std::stod(cells.at(k));
-      throw std::runtime_error("no column " + name + " in " + file.string());
-    };
-    s.T.push_back(at(t_column));
-    s.Z.push_back(at(z_column));
-  }
-  return s;
+  const CsvTable t = read_csv(file);
+  return {t.numbers(t_column), t.numbers(z_column)};
 }
 
-double interpolate(const Series& s, double T) {
-  if (T <= s.T.front()) return s.Z.front();
-  for (std::size_t k = 1; k < s.T.size(); ++k)
-    if (T <= s.T[k]) return s.Z[k - 1] + (s.Z[k] - s.Z[k - 1]) * (T - s.T[k - 1]) / (s.T[k] - s.T[k - 1]);
-  return s.Z.back();
-}
+double interpolate(const Series& s, double T) { return tools::interpolate(s.T, s.Z, T); }
 
 double front_error(int a_over_dp) {
   const double a = 0.05715;
@@ -61,19 +37,12 @@ double front_error(int a_over_dp) {
   const CommandResult r = run_command(slide_binary() + " run " + (source_dir() / "cases/dam_break_2d.yaml").string() +
                                       " --quiet --out " + out.string() + set.str());
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const Series sim = read_columns(out / "surge_front.csv", "T", "Z");
-  const Series ref = read_columns(source_dir() / "cases/reference/martin_moyce_1952_surge_front.csv",
-                                  "T_dimless_t_sqrt_2g_over_a", "Z_dimless_xfront_over_a");
-  EXPECT_GT(sim.T.back(), 3.0);
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < ref.T.size(); ++k) {
-    if (ref.T[k] <= 0.0 || ref.T[k] > 3.0) continue;
-    sum += std::abs(interpolate(sim, ref.T[k]) - ref.Z[k]) / ref.Z[k];
-    ++count;
-  }
-  EXPECT_EQ(count, 35);
-  const double error = sum / count;
+  const tools::FrontError e =
+      tools::dam_break_front_error(read_csv(out / "surge_front.csv"),
+                                   read_csv(source_dir() / "cases/reference/martin_moyce_1952_surge_front.csv"));
+  EXPECT_EQ(e.points, 35);
+  const double error = e.mean_relative;
+  const int count = e.points;
   std::printf("dam break a/%d: mean relative error in Z over %d reference points with 0 < T <= 3: %.2f %%\n",
               a_over_dp, count, 100 * error);
   return error;

@@ -11,7 +11,7 @@
 #include "fluid/periodic.hpp"
 #include "fluid/walls.hpp"
 #include "tests/cli_helpers.hpp"
-#include "tests/csv_table.hpp"
+#include "cases/csv_table.hpp"
 #include "tests/scene_runner.hpp"
 
 namespace slide::testing {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "tests/cli_helpers.hpp"
-#include "tests/csv_table.hpp"
+#include "cases/csv_table.hpp"
 
 namespace slide::testing {
 namespace {

@@ -1,5 +1,7 @@
 #include "tools/run_driver.hpp"
 
+#include <sys/resource.h>
+
 #include <fmt/format.h>
 
 #include <chrono>
@@ -19,6 +21,15 @@
 #include "tools/snapshot_writer.hpp"
 
 namespace slide::tools {
+
+namespace {
+// CPU time of this process so far, all threads, user and system (setup included).
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+}  // namespace
 namespace {
 
 volatile std::sig_atomic_t interrupted = 0;
@@ -183,6 +194,7 @@ int run_command(const RunArguments& args) {
                            {"unconverged", vs.unconverged}};
     j["setup_seconds"] = setup_seconds;
     j["wall_seconds"] = wall;
+    j["cpu_seconds"] = process_cpu_seconds();
     j["particle_steps_per_second"] = wall > 0 ? particle_steps / wall : 0.0;
     j["snapshots"] = outputs.snapshot_count();
     j["scene"] = to_json(scene->resolved);

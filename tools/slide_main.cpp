@@ -5,6 +5,7 @@
 
 #include "cases/scene.hpp"
 #include "tools/run_driver.hpp"
+#include "tools/sweep/sweep_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"slide: weakly compressible MPS simulator of landslides falling into water"};
@@ -25,6 +26,16 @@ int main(int argc, char** argv) {
 
   app.add_subcommand("schema", "print the scene reference (every key with unit, default and range)");
 
+  slide::tools::SweepArguments sweep_args;
+  std::string sweep_file, sweep_out, sweep_collect;
+  auto* sweep = app.add_subcommand("sweep", "run a scene many times with keys varied (a sweep file, tools/sweep/"
+                                            "sweep_file.hpp) and write results.csv; resumes where it stopped");
+  sweep->add_option("sweep", sweep_file, "sweep file (YAML)");
+  sweep->add_option("--out", sweep_out, "sweep folder (default runs/<sweep name>)");
+  sweep->add_option("--jobs", sweep_args.jobs, "runs at once, each with cores / jobs threads (default 1)");
+  sweep->add_option("--collect", sweep_collect,
+                    "build results.csv from the run folders in this sweep folder (made anywhere); runs nothing");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -37,5 +48,15 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (app.got_subcommand("check")) return slide::tools::check_command(args);
+  if (app.got_subcommand("sweep")) {
+    if (sweep_file.empty() == sweep_collect.empty()) {
+      std::cerr << "slide sweep: give a sweep file or --collect DIR (one of them)\n";
+      return 2;
+    }
+    sweep_args.sweep_file = sweep_file;
+    sweep_args.out = sweep_out;
+    sweep_args.collect = sweep_collect;
+    return slide::tools::sweep_command(sweep_args);
+  }
   return slide::tools::run_command(args);
 }

@@ -1,0 +1,19 @@
+#pragma once
+// `slide sweep SWEEP.yaml [--jobs N] [--out DIR]` and `slide sweep --collect DIR`.
+#include <filesystem>
+
+namespace slide::tools {
+
+struct SweepArguments {
+  std::filesystem::path sweep_file;  // empty with --collect
+  std::filesystem::path out;         // default runs/<sweep name>
+  std::filesystem::path collect;     // --collect DIR: results from the run folders in DIR/runs, nothing run
+  int jobs = 1;                      // runs at once; each gets max(1, cores / jobs) threads
+};
+
+// Exit codes: 0 every run finished (completed, inaccurate or unstable); 1 some run failed otherwise (its log in
+// DIR/logs/); 2 a bad sweep file or argument (nothing run); 130 interrupted (finished runs are kept: run the same
+// command again to resume).
+int sweep_command(const SweepArguments& args);
+
+}  // namespace slide::tools

@@ -1,0 +1,161 @@
+#include "tools/sweep/sweep_file.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cases/scene.hpp"
+#include "cases/schema.hpp"
+
+namespace slide::tools {
+namespace {
+
+using cases::SceneError;
+
+// A value as the YAML text `--set` parses back (flow style for lists and maps).
+std::string yaml_text(const YAML::Node& v) {
+  if (v.IsScalar()) return v.Scalar();
+  YAML::Emitter e;
+  e << YAML::Flow << v;
+  return e.c_str();
+}
+
+YAML::Node load_yaml(const std::filesystem::path& file) {
+  try {
+    const YAML::Node root = YAML::LoadFile(file.string());
+    if (!root.IsMap()) throw SceneError("<root>", "a sweep file must be a YAML mapping");
+    return root;
+  } catch (const YAML::BadFile&) {
+    throw SceneError("<file>", "cannot read sweep file " + file.string());
+  } catch (const YAML::Exception& e) {
+    throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
+  }
+}
+
+std::filesystem::path beside(const std::filesystem::path& sweep_file, const std::string& name) {
+  const std::filesystem::path p(name);
+  return std::filesystem::absolute(p.is_absolute() ? p : sweep_file.parent_path() / p).lexically_normal();
+}
+
+// key=value overrides from a map of scene keys (the sweep's `set`).
+std::vector<std::string> assignments(const YAML::Node& map, const std::string& where) {
+  if (!map) return {};
+  if (!map.IsMap()) throw SceneError(where, "must be a map of scene keys to values");
+  std::vector<std::string> out;
+  for (const auto& kv : map) out.push_back(kv.first.as<std::string>() + "=" + yaml_text(kv.second));
+  return out;
+}
+
+// The full grid over `vary`, the first key varying slowest.
+void expand_grid(const YAML::Node& vary, Sweep& s) {
+  if (!vary.IsMap() || vary.size() == 0) throw SceneError("vary", "must be a non-empty map of scene keys to lists");
+  std::vector<std::vector<std::string>> values;
+  for (const auto& kv : vary) {
+    const std::string key = kv.first.as<std::string>();
+    if (!kv.second.IsSequence() || kv.second.size() == 0)
+      throw SceneError("vary." + key, "must be a non-empty list of values");
+    s.varied_keys.push_back(key);
+    values.emplace_back();
+    for (const auto& v : kv.second) values.back().push_back(yaml_text(v));
+  }
+  std::vector<std::size_t> index(values.size(), 0);
+  while (true) {
+    SweepRun r;
+    for (std::size_t k = 0; k < values.size(); ++k) r.values.push_back(values[k][index[k]]);
+    s.runs.push_back(std::move(r));
+    std::size_t k = values.size();
+    while (k > 0 && ++index[k - 1] == values[k - 1].size()) index[--k] = 0;
+    if (k == 0) break;
+  }
+}
+
+// One run per entry of `combinations`; the varied keys are the union of their keys, in order of first appearance;
+// a run that does not name a key keeps the base scene's value (an empty cell).
+void expand_list(const YAML::Node& list, Sweep& s) {
+  if (!list.IsSequence() || list.size() == 0)
+    throw SceneError("combinations", "must be a non-empty list of maps of scene keys to values");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (!list[i].IsMap()) throw SceneError(fmt::format("combinations[{}]", i), "must be a map of scene keys to values");
+    for (const auto& kv : list[i]) {
+      const std::string key = kv.first.as<std::string>();
+      if (std::find(s.varied_keys.begin(), s.varied_keys.end(), key) == s.varied_keys.end())
+        s.varied_keys.push_back(key);
+    }
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    SweepRun r;
+    for (const auto& key : s.varied_keys) r.values.push_back(list[i][key] ? yaml_text(list[i][key]) : "");
+    s.runs.push_back(std::move(r));
+  }
+}
+
+ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
+  ErrorSpec spec;
+  if (!e) return spec;
+  if (!e.IsMap()) throw SceneError("error", "must be a map (measure, reference, threshold)");
+  for (const auto& kv : e) {
+    const std::string k = kv.first.as<std::string>();
+    if (k != "measure" && k != "reference" && k != "threshold" && k != "T_max")
+      throw SceneError("error." + k, "unknown key (known: measure, reference, threshold, T_max)");
+  }
+  const std::string name = e["measure"] ? e["measure"].as<std::string>() : "none";
+  const auto measure = error_measure_names.find(name);
+  if (!measure)
+    throw SceneError("error.measure", fmt::format("unknown measure \"{}\" (one of: {})", name,
+                                                  fmt::join(error_measure_names.names(), ", ")));
+  spec.measure = *measure;
+  try {
+    if (e["threshold"]) spec.threshold = e["threshold"].as<double>();
+    if (e["T_max"]) spec.T_max = e["T_max"].as<double>();
+  } catch (const YAML::Exception&) {
+    throw SceneError("error", "threshold and T_max must be numbers");
+  }
+  if (!(spec.threshold > 0.0)) throw SceneError("error.threshold", "must be positive");
+  if (!(spec.T_max > 0.0) || !std::isfinite(spec.T_max)) throw SceneError("error.T_max", "must be positive");
+  if (spec.measure == ErrorMeasure::dam_break_front) {
+    if (!e["reference"]) throw SceneError("error.reference", "dam_break_front needs the reference CSV file");
+    spec.reference = beside(file, e["reference"].as<std::string>());
+    if (!std::filesystem::is_regular_file(spec.reference))
+      throw SceneError("error.reference", "no file " + spec.reference.string());
+  }
+  return spec;
+}
+
+}  // namespace
+
+Sweep load_sweep(const std::filesystem::path& file) {
+  const YAML::Node root = load_yaml(file);
+  for (const auto& kv : root) {
+    const std::string k = kv.first.as<std::string>();
+    if (k != "scene" && k != "set" && k != "vary" && k != "combinations" && k != "error" && k != "description")
+      throw SceneError(k, "unknown key (known: description, scene, set, vary, combinations, error)");
+  }
+  Sweep s;
+  s.name = file.stem().string();
+  if (!root["scene"]) throw SceneError("scene", "required: the base scene file");
+  s.scene = beside(file, root["scene"].as<std::string>());
+  const std::vector<std::string> fixed = assignments(root["set"], "set");
+  if (root["vary"].IsDefined() == root["combinations"].IsDefined())
+    throw SceneError("vary", "give exactly one of vary (a full grid) and combinations (a list of runs)");
+  if (root["vary"]) expand_grid(root["vary"], s);
+  else expand_list(root["combinations"], s);
+  s.error = read_error(root["error"], file);
+  for (std::size_t i = 0; i < s.runs.size(); ++i) {
+    SweepRun& r = s.runs[i];
+    r.name = fmt::format("run_{:03d}", i + 1);
+    r.overrides = fixed;
+    for (std::size_t k = 0; k < s.varied_keys.size(); ++k)
+      if (!r.values[k].empty()) r.overrides.push_back(s.varied_keys[k] + "=" + r.values[k]);
+    try {
+      cases::load_scene(s.scene, r.overrides);
+    } catch (const SceneError& e) {
+      throw SceneError(e.key_path, fmt::format("{} (in the sweep's {}: {})", e.message, r.name,
+                                               fmt::join(r.overrides, " ")));
+    }
+  }
+  return s;
+}
+
+}  // namespace slide::tools

@@ -1,0 +1,43 @@
+#pragma once
+// A sweep file (`slide sweep SWEEP.yaml`): one base scene, the keys to vary, and how each run is scored.
+//
+//   scene: ../dam_break_2d.yaml        # the base scene, relative to the sweep file
+//   set: {end_time: 0.165}             # overrides every run gets (optional)
+//   vary:                              # a full grid: every combination of these values, in this key order
+//     particle_spacing: [0.0057150, 0.0028575]
+//     method.gradient: [symmetric, variational]
+//   combinations:                      # or (instead of vary) a list of runs, each a map of keys to values
+//     - {particle_spacing: 0.0057150, method.gradient: symmetric}
+//   error:                             # how a completed run is scored (optional; default: measure none)
+//     measure: dam_break_front         # one of error_measure_names (tools/sweep/error_spec.hpp)
+//     reference: ../reference/martin_moyce_1952_surge_front.csv   # relative to the sweep file
+//     threshold: 0.10                  # a completed run whose error exceeds it is `inaccurate`
+//
+// Keys are scene key paths as `--set` takes them; values are YAML (a number, a name, a list). Every run's scene is
+// checked before anything runs: a bad sweep file or combination is a SceneError (exit 2) naming the key.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tools/sweep/error_spec.hpp"
+
+namespace slide::tools {
+
+struct SweepRun {
+  std::string name;                    // run_001, ...: its folder under runs/
+  std::vector<std::string> values;     // one per varied key, as YAML text
+  std::vector<std::string> overrides;  // the sweep's fixed ones, then key=value for each varied key
+};
+
+struct Sweep {
+  std::string name;                     // the sweep file's stem
+  std::filesystem::path scene;          // the base scene, absolute
+  std::vector<std::string> varied_keys;  // in the file's order
+  std::vector<SweepRun> runs;
+  ErrorSpec error;
+};
+
+// Reads and checks a sweep file (every run's scene loads and passes the schema).
+Sweep load_sweep(const std::filesystem::path& file);
+
+}  // namespace slide::tools

@@ -1,0 +1,122 @@
+#include "tools/sweep/sweep_results.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+#include "cases/csv_table.hpp"
+#include "tools/atomic_file.hpp"
+#include "tools/measures/dam_break_front.hpp"
+
+namespace slide::tools {
+namespace {
+
+using json = nlohmann::json;
+
+std::optional<json> read_run_json(const std::filesystem::path& run_folder) {
+  std::ifstream in(run_folder / "run.json");
+  if (!in) return std::nullopt;
+  try {
+    return json::parse(in);
+  } catch (const json::exception&) {
+    return std::nullopt;  // a run.json being replaced, or damaged: treated as missing
+  }
+}
+
+double number_or_nan(const json& j, const char* key) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : RunResult::nan;
+}
+
+// The sweep's error measure on a completed run; NaN and a note when it cannot be computed.
+void measure_error(const Sweep& s, const std::filesystem::path& run_folder, RunResult& r) {
+  try {
+    switch (s.error.measure) {
+      case ErrorMeasure::none: return;
+      case ErrorMeasure::dam_break_front:
+        r.error = dam_break_front_error(read_csv(run_folder / "surge_front.csv"), read_csv(s.error.reference),
+                                        s.error.T_max)
+                      .mean_relative;
+        return;
+    }
+  } catch (const std::exception& e) {
+    r.note = e.what();
+  }
+}
+
+std::string cell(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ';');
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+std::string number(double v) { return std::isnan(v) ? "" : fmt::format("{:.6g}", v); }
+
+}  // namespace
+
+bool run_is_finished(const std::filesystem::path& run_folder) {
+  const auto j = read_run_json(run_folder);
+  if (!j || !j->contains("status")) return false;
+  const std::string status = (*j)["status"].get<std::string>();
+  return status == "completed" || status == "unstable";
+}
+
+RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem::path& run_folder) {
+  RunResult r;
+  r.name = run.name;
+  r.values = run.values;
+  const auto j = read_run_json(run_folder);
+  if (!j) return r;
+  r.particles = j->contains("particles") ? number_or_nan((*j)["particles"], "total") : RunResult::nan;
+  r.steps = number_or_nan(*j, "steps");
+  r.setup_seconds = number_or_nan(*j, "setup_seconds");
+  r.wall_seconds = number_or_nan(*j, "wall_seconds");
+  r.cpu_seconds = number_or_nan(*j, "cpu_seconds");
+  r.particle_steps_per_second = number_or_nan(*j, "particle_steps_per_second");
+  const std::string status = j->value("status", "");
+  if (status == "unstable") {
+    r.outcome = RunOutcome::unstable;
+    if (j->contains("instability")) {
+      r.failure_time = number_or_nan((*j)["instability"], "time");
+      r.failure_check = (*j)["instability"].value("reason", "");
+    }
+  } else if (status == "completed") {
+    measure_error(s, run_folder, r);
+    r.outcome = r.error > s.error.threshold ? RunOutcome::inaccurate : RunOutcome::completed;
+  } else {
+    r.outcome = RunOutcome::interrupted;
+  }
+  return r;
+}
+
+std::vector<RunResult> collect_results(const Sweep& s, const std::filesystem::path& dir) {
+  std::vector<RunResult> out;
+  for (const auto& run : s.runs) out.push_back(collect_run(s, run, dir / "runs" / run.name));
+  return out;
+}
+
+void write_results_csv(const Sweep& s, const std::vector<RunResult>& results, const std::filesystem::path& file) {
+  std::vector<std::string> header{"run"};
+  for (const auto& k : s.varied_keys) header.push_back(cell(k));
+  for (const char* c : {"outcome", "particles", "steps", "setup_seconds", "wall_seconds", "cpu_seconds",
+                        "particle_steps_per_second", "error", "failure_time", "failure_check", "note"})
+    header.emplace_back(c);
+  std::string text = fmt::format("{}\n", fmt::join(header, ","));
+  for (const auto& r : results) {
+    std::vector<std::string> row{r.name};
+    for (const auto& v : r.values) row.push_back(cell(v));
+    row.emplace_back(run_outcome_names.name(r.outcome));
+    for (const double v : {r.particles, r.steps, r.setup_seconds, r.wall_seconds, r.cpu_seconds,
+                           r.particle_steps_per_second, r.error, r.failure_time})
+      row.push_back(number(v));
+    row.push_back(cell(r.failure_check));
+    row.push_back(cell(r.note));
+    text += fmt::format("{}\n", fmt::join(row, ","));
+  }
+  write_file_atomically(file, text);
+}
+
+}  // namespace slide::tools

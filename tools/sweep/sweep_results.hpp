@@ -1,0 +1,47 @@
+#pragma once
+// A sweep's results: one row per run read back from its folder (run.json and the outputs its error measure needs).
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "fluid/name_table.hpp"
+#include "tools/sweep/sweep_file.hpp"
+
+namespace slide::tools {
+
+// completed: ran to its end time (and, with a threshold, its error is within it); inaccurate: completed with an error
+// above the sweep's threshold; unstable: stopped by an instability check (exit 3); interrupted: stopped by a signal or
+// still running; missing: no run.json (not run yet, refused, or not copied back).
+enum class RunOutcome { completed, inaccurate, unstable, interrupted, missing };
+
+inline constexpr auto run_outcome_names = make_name_table<RunOutcome>(
+    std::pair{RunOutcome::completed, "completed"}, std::pair{RunOutcome::inaccurate, "inaccurate"},
+    std::pair{RunOutcome::unstable, "unstable"}, std::pair{RunOutcome::interrupted, "interrupted"},
+    std::pair{RunOutcome::missing, "missing"});
+
+struct RunResult {
+  static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  std::string name;
+  std::vector<std::string> values;  // of the varied keys
+  RunOutcome outcome = RunOutcome::missing;
+  double particles = nan, steps = nan;
+  double setup_seconds = nan, wall_seconds = nan, cpu_seconds = nan, particle_steps_per_second = nan;
+  double error = nan;         // the sweep's measure; NaN without one or where it could not be computed
+  double failure_time = nan;  // s, unstable runs
+  std::string failure_check;  // unstable runs: the check that fired
+  std::string note;           // why the error is missing, if it is
+};
+
+// Whether a run's folder holds a finished run (completed or unstable: running it again gives the same).
+bool run_is_finished(const std::filesystem::path& run_folder);
+
+RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesystem::path& run_folder);
+std::vector<RunResult> collect_results(const Sweep& sweep, const std::filesystem::path& dir);
+
+// results.csv: run, the varied keys, outcome, particles, steps, setup_seconds, wall_seconds, cpu_seconds,
+// particle_steps_per_second, error, failure_time, failure_check, note. Cells never hold a comma (a list value's
+// commas become ';').
+void write_results_csv(const Sweep& sweep, const std::vector<RunResult>& results, const std::filesystem::path& file);
+
+}  // namespace slide::tools
