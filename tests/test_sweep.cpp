@@ -115,6 +115,10 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
     EXPECT_GT(std::stod(cell(row, "cpu_seconds")), 0.0);
   }
 
+  // The charts (tools/plot_sweep.py; CI installs Debian's python3-matplotlib): PNG files.
+  for (const char* png : {"accuracy_cost.png", "stability_map.png"})
+    EXPECT_EQ(read_file(out / png).substr(0, 8), "\x89PNG\r\n\x1a\n") << png << "\n" << r.output;
+
   // jobs.txt: one shell command per run.
   const std::string jobs = read_file(out / "jobs.txt");
   EXPECT_EQ(std::count(jobs.begin(), jobs.end(), '\n'), 4);
@@ -141,6 +145,27 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
   r = run_command(slide_binary() + " sweep --collect " + elsewhere.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_file(elsewhere / "results.csv"), read_file(out / "results.csv"));
+}
+
+// A combination the scene builder refuses (the mirror wall model on the hexagonal lattice) is `invalid`, with the
+// run's own message; the sweep goes on and exits 0.
+TEST(Sweep, ARefusedCombinationIsInvalidWithItsMessage) {
+  const fs::path dir = fresh_directory("sweep_invalid");
+  write_file(dir / "s.yaml", fmt::format(R"(scene: {}
+set: {{end_time: 0.001, output.snapshots: false}}
+combinations:
+  - {{particle_spacing: 0.011430}}
+  - {{particle_spacing: 0.011430, lattice: hexagonal, method.wall_pressure: mirror, method.initial_state: settled}}
+)",
+                                         dam_break_scene()));
+  const CommandResult r = run_command(slide_binary() + " sweep " + (dir / "s.yaml").string() + " --out " +
+                                      (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CsvTable t = read_csv(dir / "out/results.csv");
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0][t.column("outcome")], "completed");
+  EXPECT_EQ(t.rows[1][t.column("outcome")], "invalid");
+  EXPECT_NE(t.rows[1][t.column("note")].find("method.wall_pressure"), std::string::npos) << t.rows[1][t.column("note")];
 }
 
 TEST(Sweep, ABadSweepExitsTwoAndWritesNothing) {

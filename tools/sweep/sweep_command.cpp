@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
 #include <cstring>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include <thread>
 
 #include "cases/schema.hpp"
+#include "tools/atomic_file.hpp"
 #include "tools/sweep/sweep_plan.hpp"
 #include "tools/sweep/sweep_results.hpp"
 
@@ -81,17 +83,33 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
     running.erase(it);
     const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    const char* what = exit_code == 0 ? "completed" : exit_code == 3 ? "unstable" : exit_code == 130 ? "interrupted"
-                                                                                                      : "failed";
+    write_file_atomically(dir / "logs" / (run->name + ".exit"), std::to_string(exit_code) + "\n");
+    const char* what = exit_code == 0     ? "completed"
+                       : exit_code == 2   ? "refused"
+                       : exit_code == 3   ? "unstable"
+                       : exit_code == 130 ? "interrupted"
+                                          : "failed";
     std::cerr << fmt::format("  [{}/{}] {} {} (exit {}) in {:.1f} s{}\n", ++done, pending.size(), run->name, what,
                              exit_code, seconds,
                              exit_code == 0 || exit_code == 3 ? "" : "; log: " + (dir / "logs" / (run->name + ".log")).string());
     if (exit_code == 130 || exit_code == 128 + SIGINT || exit_code == 128 + SIGTERM) code = 130;
-    else if (exit_code != 0 && exit_code != 3 && code == 0) code = 1;
+    else if (exit_code != 0 && exit_code != 2 && exit_code != 3 && code == 0) code = 1;
   }
   std::signal(SIGINT, previous_int);
   std::signal(SIGTERM, previous_term);
   return interrupted ? 130 : code;
+}
+
+// The charts, by tools/plot_sweep.py (SLIDE_TOOLS_DIR: this source tree's tools/). Failing here fails no run.
+void plot(const std::filesystem::path& dir) {
+  const std::filesystem::path script = std::filesystem::path(SLIDE_TOOLS_DIR) / "plot_sweep.py";
+  if (!std::filesystem::exists("/usr/bin/python3") || !std::filesystem::exists(script)) {
+    std::cerr << "slide sweep: charts skipped (needs /usr/bin/python3 and " << script.string() << ")\n";
+    return;
+  }
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + dir.string() + "' 1>&2";
+  if (std::system(command.c_str()) != 0)
+    std::cerr << "slide sweep: charts failed (" << command << "); results.csv is complete\n";
 }
 
 int collect(const Sweep& s, const std::filesystem::path& dir) {
@@ -102,6 +120,7 @@ int collect(const Sweep& s, const std::filesystem::path& dir) {
   std::string summary;
   for (const auto& [o, n] : count) summary += fmt::format("{}{} {}", summary.empty() ? "" : ", ", n, run_outcome_names.name(o));
   std::cerr << fmt::format("slide sweep {}: {} ({})\n", s.name, (dir / "results.csv").string(), summary);
+  plot(dir);
   return 0;
 }
 

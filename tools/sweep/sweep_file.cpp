@@ -123,14 +123,44 @@ ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
   return spec;
 }
 
+PlotSpec read_plots(const YAML::Node& p, const std::vector<std::string>& varied) {
+  PlotSpec spec;
+  if (!p) return spec;
+  if (!p.IsMap()) throw SceneError("plots", "must be a map (resolution_key, map)");
+  auto varied_key = [&](const YAML::Node& n, const std::string& where) {
+    const std::string k = n.as<std::string>();
+    if (std::find(varied.begin(), varied.end(), k) == varied.end())
+      throw SceneError(where, "\"" + k + "\" is not a varied key");
+    return k;
+  };
+  for (const auto& kv : p) {
+    const std::string k = kv.first.as<std::string>();
+    if (k == "resolution_key") {
+      spec.resolution_key = kv.second.as<std::string>();
+    } else if (k == "map") {
+      for (const auto& m : kv.second) {
+        const std::string axis = m.first.as<std::string>();
+        if (axis == "x") spec.map_x = varied_key(m.second, "plots.map.x");
+        else if (axis == "y") spec.map_y = varied_key(m.second, "plots.map.y");
+        else if (axis == "panels") spec.map_panels = varied_key(m.second, "plots.map.panels");
+        else throw SceneError("plots.map." + axis, "unknown key (known: x, y, panels)");
+      }
+    } else {
+      throw SceneError("plots." + k, "unknown key (known: resolution_key, map)");
+    }
+  }
+  return spec;
+}
+
 }  // namespace
 
 Sweep load_sweep(const std::filesystem::path& file) {
   const YAML::Node root = load_yaml(file);
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
-    if (k != "scene" && k != "set" && k != "vary" && k != "combinations" && k != "error" && k != "description")
-      throw SceneError(k, "unknown key (known: description, scene, set, vary, combinations, error)");
+    if (k != "scene" && k != "set" && k != "vary" && k != "combinations" && k != "error" && k != "description" &&
+        k != "plots")
+      throw SceneError(k, "unknown key (known: description, scene, set, vary, combinations, error, plots)");
   }
   Sweep s;
   s.name = file.stem().string();
@@ -142,6 +172,7 @@ Sweep load_sweep(const std::filesystem::path& file) {
   if (root["vary"]) expand_grid(root["vary"], s);
   else expand_list(root["combinations"], s);
   s.error = read_error(root["error"], file);
+  s.plots = read_plots(root["plots"], s.varied_keys);
   for (std::size_t i = 0; i < s.runs.size(); ++i) {
     SweepRun& r = s.runs[i];
     r.name = fmt::format("run_{:03d}", i + 1);

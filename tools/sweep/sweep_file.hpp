@@ -12,6 +12,9 @@
 //     measure: dam_break_front         # one of error_measure_names (tools/sweep/error_spec.hpp)
 //     reference: ../reference/martin_moyce_1952_surge_front.csv   # relative to the sweep file
 //     threshold: 0.10                  # a completed run whose error exceeds it is `inaccurate`
+//   plots:                             # what tools/plot_sweep.py draws (optional)
+//     resolution_key: particle_spacing # the chart's series are the other varied keys
+//     map: {x: particle_spacing, y: method.gradient, panels: method.wall_pressure}   # default: the first three
 //
 // Keys are scene key paths as `--set` takes them; values are YAML (a number, a name, a list). Every run's scene is
 // checked before anything runs: a bad sweep file or combination is a SceneError (exit 2) naming the key.
@@ -29,12 +32,20 @@ struct SweepRun {
   std::vector<std::string> overrides;  // the sweep's fixed ones, then key=value for each varied key
 };
 
+// What tools/plot_sweep.py draws: the resolution key (the accuracy-cost chart's series are the other varied keys) and
+// the stability map's axes and panels (empty: the first, second and third varied keys).
+struct PlotSpec {
+  std::string resolution_key = "particle_spacing";
+  std::string map_x, map_y, map_panels;
+};
+
 struct Sweep {
   std::string name;                     // the sweep file's stem
   std::filesystem::path scene;          // the base scene, absolute
   std::vector<std::string> varied_keys;  // in the file's order
   std::vector<SweepRun> runs;
   ErrorSpec error;
+  PlotSpec plots;
 };
 
 // Reads and checks a sweep file (every run's scene loads and passes the schema).

@@ -22,6 +22,10 @@ void write_plan(const Sweep& s, const std::filesystem::path& dir) {
                 {"reference", s.error.reference.string()},
                 {"T_max", s.error.T_max},
                 {"threshold", std::isfinite(s.error.threshold) ? json(s.error.threshold) : json(nullptr)}};
+  j["plots"] = {{"resolution_key", s.plots.resolution_key},
+                {"map_x", s.plots.map_x},
+                {"map_y", s.plots.map_y},
+                {"map_panels", s.plots.map_panels}};
   write_file_atomically(dir / "plan.json", j.dump(2) + "\n");
 }
 
@@ -44,6 +48,9 @@ Sweep read_plan(const std::filesystem::path& dir) {
     s.error.reference = e.at("reference").get<std::string>();
     s.error.T_max = e.at("T_max").get<double>();
     if (!e.at("threshold").is_null()) s.error.threshold = e.at("threshold").get<double>();
+    const json& p = j.at("plots");
+    s.plots = {p.at("resolution_key").get<std::string>(), p.at("map_x").get<std::string>(),
+               p.at("map_y").get<std::string>(), p.at("map_panels").get<std::string>()};
     return s;
   } catch (const json::exception& ex) {
     throw std::runtime_error((dir / "plan.json").string() + ": " + ex.what());

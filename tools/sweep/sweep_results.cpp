@@ -47,6 +47,19 @@ void measure_error(const Sweep& s, const std::filesystem::path& run_folder, RunR
   }
 }
 
+// A small file's text without its trailing newline; empty if it cannot be read.
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  return text;
+}
+
+std::string last_line(const std::string& text) {
+  const auto k = text.find_last_of('\n');
+  return k == std::string::npos ? text : text.substr(k + 1);
+}
+
 std::string cell(std::string text) {
   std::replace(text.begin(), text.end(), ',', ';');
   std::replace(text.begin(), text.end(), '\n', ' ');
@@ -64,12 +77,19 @@ bool run_is_finished(const std::filesystem::path& run_folder) {
   return status == "completed" || status == "unstable";
 }
 
-RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem::path& run_folder) {
+RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem::path& dir) {
   RunResult r;
   r.name = run.name;
   r.values = run.values;
+  const std::filesystem::path run_folder = dir / "runs" / run.name;
   const auto j = read_run_json(run_folder);
-  if (!j) return r;
+  if (!j) {
+    if (read_text(dir / "logs" / (run.name + ".exit")) == "2") {
+      r.outcome = RunOutcome::invalid;
+      r.note = last_line(read_text(dir / "logs" / (run.name + ".log")));
+    }
+    return r;
+  }
   r.particles = j->contains("particles") ? number_or_nan((*j)["particles"], "total") : RunResult::nan;
   r.steps = number_or_nan(*j, "steps");
   r.setup_seconds = number_or_nan(*j, "setup_seconds");
@@ -94,7 +114,7 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
 
 std::vector<RunResult> collect_results(const Sweep& s, const std::filesystem::path& dir) {
   std::vector<RunResult> out;
-  for (const auto& run : s.runs) out.push_back(collect_run(s, run, dir / "runs" / run.name));
+  for (const auto& run : s.runs) out.push_back(collect_run(s, run, dir));
   return out;
 }
 

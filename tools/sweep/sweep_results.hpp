@@ -11,13 +11,15 @@
 namespace slide::tools {
 
 // completed: ran to its end time (and, with a threshold, its error is within it); inaccurate: completed with an error
-// above the sweep's threshold; unstable: stopped by an instability check (exit 3); interrupted: stopped by a signal or
-// still running; missing: no run.json (not run yet, refused, or not copied back).
-enum class RunOutcome { completed, inaccurate, unstable, interrupted, missing };
+// above the sweep's threshold; unstable: stopped by an instability check (exit 3); invalid: its scene was refused
+// (exit 2: a combination the method does not allow, as the mirror wall model on the hexagonal lattice); interrupted:
+// stopped by a signal or still running; missing: no run.json (not run yet, or not copied back).
+enum class RunOutcome { completed, inaccurate, unstable, invalid, interrupted, missing };
 
 inline constexpr auto run_outcome_names = make_name_table<RunOutcome>(
     std::pair{RunOutcome::completed, "completed"}, std::pair{RunOutcome::inaccurate, "inaccurate"},
-    std::pair{RunOutcome::unstable, "unstable"}, std::pair{RunOutcome::interrupted, "interrupted"},
+    std::pair{RunOutcome::unstable, "unstable"}, std::pair{RunOutcome::invalid, "invalid"},
+    std::pair{RunOutcome::interrupted, "interrupted"},
     std::pair{RunOutcome::missing, "missing"});
 
 struct RunResult {
@@ -30,13 +32,14 @@ struct RunResult {
   double error = nan;         // the sweep's measure; NaN without one or where it could not be computed
   double failure_time = nan;  // s, unstable runs
   std::string failure_check;  // unstable runs: the check that fired
-  std::string note;           // why the error is missing, if it is
+  std::string note;           // why the error is missing, or why the run was refused
 };
 
 // Whether a run's folder holds a finished run (completed or unstable: running it again gives the same).
 bool run_is_finished(const std::filesystem::path& run_folder);
 
-RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesystem::path& run_folder);
+// A run's row from the sweep folder DIR: DIR/runs/<name>/ and, for a refused run, DIR/logs/<name>.exit and .log.
+RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesystem::path& dir);
 std::vector<RunResult> collect_results(const Sweep& sweep, const std::filesystem::path& dir);
 
 // results.csv: run, the varied keys, outcome, particles, steps, setup_seconds, wall_seconds, cpu_seconds,
