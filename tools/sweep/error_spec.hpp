@@ -12,10 +12,13 @@ namespace slide::tools {
 enum class ErrorMeasure {
   none,             // no error: outcomes are completed or unstable (stability maps)
   dam_break_front,  // surge front against Martin & Moyce (tools/measures/dam_break_front.hpp)
+  finest_run,       // wave crests, troughs and slide travel against the sweep's finest completed run (the smallest
+                    // value of the resolution key; tools/measures/wave_signature.hpp)
 };
 
 inline constexpr auto error_measure_names = make_name_table<ErrorMeasure>(
-    std::pair{ErrorMeasure::none, "none"}, std::pair{ErrorMeasure::dam_break_front, "dam_break_front"});
+    std::pair{ErrorMeasure::none, "none"}, std::pair{ErrorMeasure::dam_break_front, "dam_break_front"},
+    std::pair{ErrorMeasure::finest_run, "finest_run"});
 
 struct ErrorSpec {
   ErrorMeasure measure = ErrorMeasure::none;

@@ -32,10 +32,15 @@ double number_or_nan(const json& j, const char* key) {
 }
 
 // The sweep's error measure on a completed run; NaN and a note when it cannot be computed.
-void measure_error(const Sweep& s, const std::filesystem::path& run_folder, RunResult& r) {
+void measure_error(const Sweep& s, const std::filesystem::path& run_folder, const WaveSignature* finest,
+                   RunResult& r) {
   try {
     switch (s.error.measure) {
       case ErrorMeasure::none: return;
+      case ErrorMeasure::finest_run:
+        if (!finest) throw std::runtime_error("no finest run completed");
+        r.error = wave_signature_error(wave_signature(run_folder), *finest);
+        return;
       case ErrorMeasure::dam_break_front:
         r.error = dam_break_front_error(read_csv(run_folder / "surge_front.csv"), read_csv(s.error.reference),
                                         s.error.T_max)
@@ -77,7 +82,8 @@ bool run_is_finished(const std::filesystem::path& run_folder) {
   return status == "completed" || status == "unstable";
 }
 
-RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem::path& dir) {
+RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem::path& dir,
+                      const WaveSignature* finest) {
   RunResult r;
   r.name = run.name;
   r.values = run.values;
@@ -104,7 +110,7 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
       r.failure_check = (*j)["instability"].value("reason", "");
     }
   } else if (status == "completed") {
-    measure_error(s, run_folder, r);
+    measure_error(s, run_folder, finest, r);
     r.outcome = r.error > s.error.threshold ? RunOutcome::inaccurate : RunOutcome::completed;
   } else {
     r.outcome = RunOutcome::interrupted;
@@ -112,9 +118,42 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   return r;
 }
 
+namespace {
+// The completed run with the smallest value of the resolution key (the first such in the sweep's order), or null.
+const SweepRun* finest_completed_run(const Sweep& s, const std::filesystem::path& dir) {
+  const auto key = std::find(s.varied_keys.begin(), s.varied_keys.end(), s.plots.resolution_key);
+  if (key == s.varied_keys.end()) return nullptr;
+  const std::size_t k = key - s.varied_keys.begin();
+  const SweepRun* finest = nullptr;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& run : s.runs) {
+    const auto j = read_run_json(dir / "runs" / run.name);
+    if (!j || j->value("status", "") != "completed" || run.values[k].empty()) continue;
+    const double v = std::stod(run.values[k]);
+    if (v < smallest) smallest = v, finest = &run;
+  }
+  return finest;
+}
+}  // namespace
+
 std::vector<RunResult> collect_results(const Sweep& s, const std::filesystem::path& dir) {
+  std::optional<WaveSignature> finest;
+  const SweepRun* finest_run = nullptr;
+  std::string why_none;
+  if (s.error.measure == ErrorMeasure::finest_run) {
+    finest_run = finest_completed_run(s, dir);
+    try {
+      if (finest_run) finest = wave_signature(dir / "runs" / finest_run->name);
+    } catch (const std::exception& e) {
+      why_none = e.what();
+    }
+  }
   std::vector<RunResult> out;
-  for (const auto& run : s.runs) out.push_back(collect_run(s, run, dir));
+  for (const auto& run : s.runs) {
+    out.push_back(collect_run(s, run, dir, finest ? &*finest : nullptr));
+    if (&run == finest_run) out.back().note = "the reference (finest) run";
+    if (!why_none.empty() && out.back().note.empty()) out.back().note = "finest run unreadable: " + why_none;
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fluid/name_table.hpp"
+#include "tools/measures/wave_signature.hpp"
 #include "tools/sweep/sweep_file.hpp"
 
 namespace slide::tools {
@@ -39,7 +40,9 @@ struct RunResult {
 bool run_is_finished(const std::filesystem::path& run_folder);
 
 // A run's row from the sweep folder DIR: DIR/runs/<name>/ and, for a refused run, DIR/logs/<name>.exit and .log.
-RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesystem::path& dir);
+// `finest`: the reference of the finest_run measure (null: none completed).
+RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesystem::path& dir,
+                      const WaveSignature* finest = nullptr);
 std::vector<RunResult> collect_results(const Sweep& sweep, const std::filesystem::path& dir);
 
 // results.csv: run, the varied keys, outcome, particles, steps, setup_seconds, wall_seconds, cpu_seconds,
