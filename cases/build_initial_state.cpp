@@ -1,4 +1,4 @@
-// Step: how the water starts. The sound speed (from the scene, or 10 sqrt(g H) of the deepest water), the
+// Step: how the water starts. The sound speed (from the scene, or a multiple of sqrt(g H) of the deepest water), the
 // hydrostatic start (columns compressed to the equilibrium column's spacing, floating bodies lowered with them), the
 // domain, and the settled start (damped settling before t = 0, coupling/relaxation.hpp).
 #include <fmt/format.h>
@@ -45,10 +45,12 @@ void choose_sound_speed(SceneBuild& b) {
     return;
   }
   if (g <= 0.0 || scene.deepest_water <= 0.0)
-    throw SceneError("method.sound_speed", "cannot default to 10 sqrt(g H) without downward gravity; set it");
-  opt.sound_speed = 10.0 * std::sqrt(g * scene.deepest_water);
-  scene.sound_speed_source =
-      fmt::format("default 10 sqrt(g H), H = {:.6g} m (deepest water), g = {:.6g} m/s^2", scene.deepest_water, g);
+    throw SceneError("method.sound_speed", "cannot default to a multiple of sqrt(g H) without downward gravity; set it");
+  const double factor = b.r["method"]["sound_speed_factor"].as<double>();
+  opt.sound_speed = factor * std::sqrt(g * scene.deepest_water);
+  scene.sound_speed_source = fmt::format("{:g} sqrt(g H) (method.sound_speed_factor), H = {:.6g} m (deepest water), "
+                                         "g = {:.6g} m/s^2",
+                                         factor, scene.deepest_water, g);
 }
 
 void start_hydrostatic(SceneBuild& b) {

@@ -33,6 +33,9 @@ int main(int argc, char** argv) {
   sweep->add_option("sweep", sweep_file, "sweep file (YAML)");
   sweep->add_option("--out", sweep_out, "sweep folder (default runs/<sweep name>)");
   sweep->add_option("--jobs", sweep_args.jobs, "runs at once, each with cores / jobs threads (default 1)");
+  sweep->add_flag("--plan-only", sweep_args.plan_only,
+                  "write plan.json and jobs.txt (one command per run, for xargs -P or a cluster's job array); run "
+                  "nothing");
   sweep->add_option("--collect", sweep_collect,
                     "build results.csv from the run folders in this sweep folder (made anywhere); runs nothing");
 

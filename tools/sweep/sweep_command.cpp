@@ -138,6 +138,11 @@ int sweep_command(const SweepArguments& args) {
     std::filesystem::create_directories(dir / "runs");
     write_plan(s, dir);
     write_jobs(this_program(), s, dir, threads);
+    if (args.plan_only) {
+      std::cerr << fmt::format("slide sweep {}: {} runs planned: {} (collect with slide sweep --collect {})\n", s.name,
+                               s.runs.size(), (dir / "jobs.txt").string(), dir.string());
+      return 0;
+    }
     const int code = run_pending(s, dir, args.jobs, threads);
     collect(s, dir);
     return code;

@@ -9,6 +9,7 @@ struct SweepArguments {
   std::filesystem::path out;         // default runs/<sweep name>
   std::filesystem::path collect;     // --collect DIR: results from the run folders in DIR/runs, nothing run
   int jobs = 1;                      // runs at once; each gets max(1, cores / jobs) threads
+  bool plan_only = false;            // write plan.json and jobs.txt (for other machines), run nothing
 };
 
 // Writes DIR/results.csv, then the charts (tools/plot_sweep.py: accuracy_cost.png, stability_map.png) when Debian's
