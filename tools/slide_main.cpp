@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cases/scene.hpp"
+#include "tools/report.hpp"
 #include "tools/run_driver.hpp"
 #include "tools/sweep/sweep_command.hpp"
 
@@ -28,6 +29,10 @@ int main(int argc, char** argv) {
 
   slide::tools::SweepArguments sweep_args;
   std::string sweep_file, sweep_out, sweep_collect;
+  std::string report_dir;
+  auto* report = app.add_subcommand("report", "write report.html (one self-contained page) into a run or sweep folder");
+  report->add_option("dir", report_dir, "run folder (run.json) or sweep folder (plan.json)")->required();
+
   auto* sweep = app.add_subcommand("sweep", "run a scene many times with keys varied (a sweep file, tools/sweep/"
                                             "sweep_file.hpp) and write results.csv; resumes where it stopped");
   sweep->add_option("sweep", sweep_file, "sweep file (YAML)");
@@ -51,6 +56,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (app.got_subcommand("check")) return slide::tools::check_command(args);
+  if (app.got_subcommand("report")) return slide::tools::report_command(report_dir);
   if (app.got_subcommand("sweep")) {
     if (sweep_file.empty() == sweep_collect.empty()) {
       std::cerr << "slide sweep: give a sweep file or --collect DIR (one of them)\n";

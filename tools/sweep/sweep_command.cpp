@@ -17,6 +17,7 @@
 
 #include "cases/schema.hpp"
 #include "tools/atomic_file.hpp"
+#include "tools/plot_scripts.hpp"
 #include "tools/sweep/sweep_plan.hpp"
 #include "tools/sweep/sweep_results.hpp"
 
@@ -100,18 +101,6 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
   return interrupted ? 130 : code;
 }
 
-// The charts, by tools/plot_sweep.py (SLIDE_TOOLS_DIR: this source tree's tools/). Failing here fails no run.
-void plot(const std::filesystem::path& dir) {
-  const std::filesystem::path script = std::filesystem::path(SLIDE_TOOLS_DIR) / "plot_sweep.py";
-  if (!std::filesystem::exists("/usr/bin/python3") || !std::filesystem::exists(script)) {
-    std::cerr << "slide sweep: charts skipped (needs /usr/bin/python3 and " << script.string() << ")\n";
-    return;
-  }
-  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + dir.string() + "' 1>&2";
-  if (std::system(command.c_str()) != 0)
-    std::cerr << "slide sweep: charts failed (" << command << "); results.csv is complete\n";
-}
-
 int collect(const Sweep& s, const std::filesystem::path& dir) {
   const auto results = collect_results(s, dir);
   write_results_csv(s, results, dir / "results.csv");
@@ -120,7 +109,7 @@ int collect(const Sweep& s, const std::filesystem::path& dir) {
   std::string summary;
   for (const auto& [o, n] : count) summary += fmt::format("{}{} {}", summary.empty() ? "" : ", ", n, run_outcome_names.name(o));
   std::cerr << fmt::format("slide sweep {}: {} ({})\n", s.name, (dir / "results.csv").string(), summary);
-  plot(dir);
+  run_plot_script("plot_sweep.py", dir);
   return 0;
 }
 
