@@ -127,6 +127,52 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.2}}
   EXPECT_EQ(expect_self_contained(html), 2);
 }
 
+// The page in a real browser (Debian's chromium, headless; tools/test installs it, and the test is skipped with a
+// message where it is not there): a copy of the page with a script appended (the page itself has none) writes, once
+// loaded, how many images there are, how many did not decode, and every resource fetched that is not a data: URL.
+// A control page with one damaged image and one remote image must be caught.
+std::string browser_check(const fs::path& page, const fs::path& work) {
+  const fs::path copy = work / (page.stem().string() + "_checked.html");
+  write_file(copy, read_file(page) + R"(<script>
+window.addEventListener('load', () => {
+  const images = [...document.images];
+  const bad = images.filter(i => !(i.complete && i.naturalWidth > 0)).length;
+  const fetched = performance.getEntriesByType('resource').map(e => e.name).filter(n => !n.startsWith('data:'));
+  const p = document.createElement('p');
+  p.id = 'browser-check';
+  p.textContent = `images=${images.length} undecoded=${bad} fetched=${fetched.length}`;
+  document.body.appendChild(p);
+});
+</script>
+)");
+  const CommandResult r = run_command("timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom 'file://" +
+                                      copy.string() + "' 2>/dev/null");
+  const auto at = r.output.find("id=\"browser-check\">");
+  if (at == std::string::npos) return "no result: " + r.output.substr(0, 200);
+  const auto begin = r.output.find('>', at) + 1;
+  return r.output.substr(begin, r.output.find('<', begin) - begin);
+}
+
+TEST(Report, OpensInAHeadlessBrowserWithEveryImageDecodedAndNothingFetched) {
+  if (run_command("command -v chromium").exit_code != 0)
+    GTEST_SKIP() << "chromium is not installed (tools/test installs Debian's chromium where it can); the page's "
+                    "structure is checked by the other Report tests";
+  const fs::path dir = fresh_directory("report_browser");
+  const CommandResult run = run_command(slide_binary() + " run " + (source_dir() / "cases/dam_break_2d.yaml").string() +
+                                        " --quiet --out " + (dir / "run").string() +
+                                        " --set particle_spacing=0.011430 --set end_time=0.05");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_EQ(run_command(slide_binary() + " report " + (dir / "run").string()).exit_code, 0);
+  EXPECT_EQ(browser_check(dir / "run/report.html", dir), "images=2 undecoded=0 fetched=0");
+  // The control: one image damaged, one remote.
+  std::string page = read_file(dir / "run/report.html");
+  const auto data = page.find("base64,") + 7;
+  page.replace(data, 40, "AAAA");
+  page.replace(page.find("</body>"), 0, "<img src=\"http://example.invalid/x.png\">");
+  write_file(dir / "control.html", page);
+  EXPECT_EQ(browser_check(dir / "control.html", dir), "images=3 undecoded=2 fetched=1");
+}
+
 TEST(Report, AFolderThatIsNeitherExitsTwo) {
   const fs::path dir = fresh_directory("report_none");
   EXPECT_EQ(run_command(slide_binary() + " report " + dir.string()).exit_code, 2);
