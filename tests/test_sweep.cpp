@@ -145,6 +145,18 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
   r = run_command(slide_binary() + " sweep --collect " + elsewhere.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_file(elsewhere / "results.csv"), read_file(out / "results.csv"));
+
+  // slide check --target-error E --with DIR: the cheapest run within E (run_001 is cheaper but 8.9 % off), and its
+  // cost scaled to the checked scene (dp a/20: twice as fine as run_003's a/10).
+  const std::string check = slide_binary() + " check " + dam_break_scene() + " --with " + out.string();
+  r = run_command(check + " --target-error 0.08");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("cheapest within it: run_003 (particle_spacing=0.005715 method.gradient=symmetric)"),
+            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("this scene with those settings"), std::string::npos) << r.output;
+  r = run_command(check + " --target-error 0.01");
+  EXPECT_NE(r.output.find("no run is within it; the smallest error measured is 0.07"), std::string::npos) << r.output;
+  EXPECT_EQ(run_command(slide_binary() + " check " + dam_break_scene() + " --target-error 0.01").exit_code, 2);
 }
 
 // A combination the scene builder refuses (the mirror wall model on the hexagonal lattice) is `invalid`, with the

@@ -18,6 +18,7 @@
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/run_outputs.hpp"
+#include "tools/sweep/recommendation.hpp"
 #include "tools/snapshot_writer.hpp"
 
 namespace slide::tools {
@@ -90,6 +91,18 @@ int check_command(const RunArguments& args) {
   const std::unique_ptr<cases::Scene> scene = load_or_report(args);
   if (!scene) return 2;
   std::cout << cases::check_report(*scene);
+  if (!args.sweep_dir.empty()) {
+    const auto& sim = *scene->simulation;
+    const double steps = scene->end_time / sim.allowed_time_step().first;
+    try {
+      const double fluid = double(scene->fluid_count);
+      std::cout << recommendation_report(args.sweep_dir, args.target_error, fluid,
+                                         double(sim.particles.real_count()) - fluid, steps, sim.options.dp);
+    } catch (const std::exception& e) {
+      std::cerr << "slide: --with " << args.sweep_dir.string() << ": " << e.what() << "\n";
+      return 2;
+    }
+  }
   return 0;
 }
 

@@ -2,6 +2,7 @@
 // The `slide run` and `slide check` commands, as functions returning the process exit code
 // (0 completed, 2 invalid scene or arguments, 3 unstable, 130 interrupted).
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@ struct RunArguments {
   std::vector<std::string> overrides;
   int threads = 0;            // 0: OpenMP's default
   bool quiet = false;
+  // check --target-error E --with SWEEP_DIR: the cheapest configuration of a finished sweep within E (NaN: not asked)
+  double target_error = std::numeric_limits<double>::quiet_NaN();
+  std::filesystem::path sweep_dir;
 };
 
 int run_command(const RunArguments& args);

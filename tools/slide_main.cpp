@@ -24,6 +24,12 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "validate a scene and print what it would run; runs nothing");
   check->add_option("scene", scene, "scene file (YAML)")->required();
   check->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
+  auto* target = check->add_option("--target-error", args.target_error,
+                                   "with --with: name the cheapest configuration of that sweep whose error is at most this");
+  std::string with_dir;
+  auto* with = check->add_option("--with", with_dir, "a finished sweep's folder (slide sweep) of the same kind of scene");
+  target->needs(with);
+  with->needs(target);
 
   app.add_subcommand("schema", "print the scene reference (every key with unit, default and range)");
 
@@ -55,7 +61,10 @@ int main(int argc, char** argv) {
     std::cout << slide::cases::scene_schema().document("slide scene reference");
     return 0;
   }
-  if (app.got_subcommand("check")) return slide::tools::check_command(args);
+  if (app.got_subcommand("check")) {
+    args.sweep_dir = with_dir;
+    return slide::tools::check_command(args);
+  }
   if (app.got_subcommand("report")) return slide::tools::report_command(report_dir);
   if (app.got_subcommand("sweep")) {
     if (sweep_file.empty() == sweep_collect.empty()) {
