@@ -6,7 +6,8 @@
                       marked and labelled; runs without an error (unstable, missing) are counted in the legend.
   stability_map.png   the outcome of every run over two varied keys (the sweep's map.x and map.y, else the first
                       two), one panel per value of a third (map.panels, else the third varied key): completed,
-                      inaccurate, unstable (with the time it failed), invalid, interrupted, missing.
+                      inaccurate, unstable (with the time it failed), invalid (with the key it was refused on),
+                      interrupted, missing.
 Usage: tools/plot_sweep.py SWEEP_DIR. Uses Debian's python3-matplotlib through /usr/bin/python3."""
 import csv
 import json
@@ -60,17 +61,24 @@ def plot_accuracy_cost(rows, plan, target):
     keys = plan["varied_keys"]
     resolution = plan.get("plots", {}).get("resolution_key", "particle_spacing")
     option_keys = [k for k in keys if k != resolution]
-    fig, ax = plt.subplots(figsize=(12, 6))
     series = {}
     for r in rows:
         series.setdefault(option_label(r, option_keys), []).append(r)
+    # Too many series to read (a sweep of several method keys): one series per value of the first method key, its
+    # points not joined.
+    joined = resolution in keys
+    if len(series) > 8 and option_keys:
+        series, joined = {}, False
+        for r in rows:
+            series.setdefault(option_label(r, option_keys[:1]), []).append(r)
+    fig, ax = plt.subplots(figsize=(12, 6))
     points = []
     for label, rs in series.items():
         xy = sorted((cost(r), number(r["error"]), r) for r in rs if math.isfinite(number(r["error"])) and cost(r) > 0)
         failed = sum(1 for r in rs if r["outcome"] == "unstable")
         text = label + (f" ({failed} unstable)" if failed else "")
         if xy:
-            ax.plot([p[0] for p in xy], [p[1] for p in xy], "o-", label=text)
+            ax.plot([p[0] for p in xy], [p[1] for p in xy], "o-" if joined else "o", label=text)
             points += [(p[0], p[1], f"{p[2]['run']}: {option_label(p[2], keys)}") for p in xy]
         else:
             ax.plot([], [], "x", label=text + ": no error")
@@ -78,11 +86,9 @@ def plot_accuracy_cost(rows, plan, target):
     if front:
         ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="k", lw=1.2, alpha=0.6,
                 label="Pareto front")
-        middle = math.sqrt(front[0][0] * front[-1][0])
-        for c, e, text in front:
-            right = c > middle
-            ax.annotate(text, (c, e), textcoords="offset points", xytext=(-6 if right else 6, 6), fontsize=7,
-                        ha="right" if right else "left")
+        for k, (c, e, text) in enumerate(front):
+            ax.annotate(text, (c, e), textcoords="offset points", xytext=(8, 4 - 10 * (k % 2)), fontsize=6.5,
+                        ha="left", bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
     threshold = plan["error"].get("threshold")
     if threshold is not None:
         ax.axhline(threshold, color="#f0a030", ls="--", lw=1, label=f"threshold {threshold:g}")
@@ -129,6 +135,8 @@ def plot_stability_map(rows, plan, target):
                 note = worst["outcome"]
                 if worst["outcome"] == "unstable" and worst["failure_time"]:
                     note += f"\nt={number(worst['failure_time']):.3g} s"
+                elif worst["outcome"] == "invalid" and worst["note"]:
+                    note += "\n" + worst["note"].split(":")[0]  # the key the run was refused on
                 elif math.isfinite(number(worst["error"])):
                     note += f"\n{number(worst['error']):.3g}"
                 ax.text(i, j, note, ha="center", va="center", fontsize=7)

@@ -92,7 +92,11 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   if (!j) {
     if (read_text(dir / "logs" / (run.name + ".exit")) == "2") {
       r.outcome = RunOutcome::invalid;
-      r.note = last_line(read_text(dir / "logs" / (run.name + ".log")));
+      // "slide: invalid scene FILE: KEY: what" -> "KEY: what"
+      std::string line = last_line(read_text(dir / "logs" / (run.name + ".log")));
+      const std::string prefix = "slide: invalid scene " + s.scene.string() + ": ";
+      if (line.rfind(prefix, 0) == 0) line = line.substr(prefix.size());
+      r.note = line;
     }
     return r;
   }
