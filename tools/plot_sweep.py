@@ -67,11 +67,15 @@ def plot_accuracy_cost(rows, plan, target):
     # Too many series to read (a sweep of several method keys): one series per value of the first method key, its
     # points not joined.
     joined = resolution in keys
-    if len(series) > 8 and option_keys:
+    with_error = [rs for rs in series.values() if any(math.isfinite(number(r["error"])) for r in rs)]
+    if len(with_error) > 12 and option_keys:
         series, joined = {}, False
         for r in rows:
             series.setdefault(option_label(r, option_keys[:1]), []).append(r)
-    fig, ax = plt.subplots(figsize=(12, 6))
+    fig, ax = plt.subplots(figsize=(11, 8))
+    if len(series) > 10:
+        ax.set_prop_cycle(color=plt.get_cmap("tab20").colors)
+    no_error = []
     points = []
     for label, rs in series.items():
         xy = sorted((cost(r), number(r["error"]), r) for r in rs if math.isfinite(number(r["error"])) and cost(r) > 0)
@@ -81,7 +85,9 @@ def plot_accuracy_cost(rows, plan, target):
             ax.plot([p[0] for p in xy], [p[1] for p in xy], "o-" if joined else "o", label=text)
             points += [(p[0], p[1], f"{p[2]['run']}: {option_label(p[2], keys)}") for p in xy]
         else:
-            ax.plot([], [], "x", label=text + ": no error")
+            no_error.append(text)
+    if no_error:
+        ax.plot([], [], " ", label=f"no error (every run unstable or refused): {len(no_error)} more series")
     front = pareto(points)
     if front:
         ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="k", lw=1.2, alpha=0.6,
@@ -98,7 +104,7 @@ def plot_accuracy_cost(rows, plan, target):
     ax.set_ylabel(f"error ({plan['error']['measure']})")
     ax.set_title(f"sweep {plan['sweep']}: accuracy against cost")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2)
     fig.tight_layout()
     fig.savefig(target, dpi=110)
     plt.close(fig)
