@@ -27,7 +27,7 @@ struct CsvTable {
     if (c < 0) throw std::out_of_range("no column " + name);
     return static_cast<std::size_t>(c);
   }
-  // A column's cells as numbers (std::invalid_argument where one is not).
+  // A column's cells as numbers (std::invalid_argument where one is not, std::out_of_range where a row is short).
   std::vector<double> numbers(const std::string& name) const {
     const std::size_t c = column(name);
     std::vector<double> out;
@@ -42,6 +42,7 @@ inline std::vector<std::string> split_csv_line(const std::string& line) {
   std::stringstream ss(line);
   std::string cell;
   while (std::getline(ss, cell, ',')) out.push_back(cell);
+  if (!line.empty() && line.back() == ',') out.emplace_back();  // getline drops a last, empty cell
   return out;
 }
 

@@ -14,18 +14,6 @@ struct SurgeFront {
   std::size_t body_size = 0; // particles in the largest connected body
 };
 
-// Dam-break front (issue 3): the largest connected body of water, particles linked when closer than 2 dp; its
-// front is its largest particle x plus half a spacing (the particle's own extent), measured from the wall face.
-// The height at the wall is the water's edge (free_surface_elevation: where the kernel-interpolated volume fraction
-// is 1/2) on 8 vertical lines between one kernel radius re and re + band out from the wall face, fitted by a straight
-// line (least squares) and read at the face, above the floor face (band: a quarter of the column's width in the
-// dam break; with no width given, the edge at re alone). Why: the edge moves continuously with the particles, unlike the highest particle beside the wall,
-// which jumps by a spacing whenever one particle leaves the wall (measured, a/40: free against no-slip walls changed
-// it by 2.3 % of 2a at T = 1.33 in one such jump); beyond re the wall's missing neighbours do not thin the
-// interpolation; and the fit over a band averages out single particles that cling to the wall above the water.
-// NaN where no line meets water. Union-find over the neighbour list; ties between equal bodies go to the one
-// holding the lowest particle id, so the result does not depend on particle order. Periodic ghosts are not counted:
-// a link to a ghost links to its source (water connected across the period's ends is one body).
 // The straight line fitted to the water's edge at 8 points from re to re + band out from the wall, read at the wall.
 template <int D>
 double water_height_at_wall(const Simulation<D>& sim, double wall_face_x, double band) {
@@ -43,6 +31,19 @@ double water_height_at_wall(const Simulation<D>& sim, double wall_face_x, double
   return (sy - slope * sx) / lines;
 }
 
+// Dam-break front (issue 3): the largest connected body of water, particles linked when closer than 2 dp; its
+// front is its largest particle x plus half a spacing (the particle's own extent), measured from the wall face.
+// The height at the wall is the water's edge (free_surface_elevation: where the kernel-interpolated volume fraction
+// is 1/2) on 8 vertical lines between one kernel radius re and re + band out from the wall face, fitted by a straight
+// line (least squares) and read at the face, above the floor face (band: a quarter of the column's width in the
+// dam break; with no width given, the edge at re alone). Why: the edge moves continuously with the particles, unlike
+// the highest particle beside the wall, which jumps by a spacing whenever one particle leaves the wall (measured,
+// a/40: free against no-slip walls changed it by 2.3 % of 2a at T = 1.33 in one such jump); beyond re the wall's
+// missing neighbours do not thin the interpolation; and the fit over a band averages out single particles that cling
+// to the wall above the water. NaN where no line meets water. Union-find over the neighbour list; ties between equal
+// bodies go to the one holding the lowest particle id, so the result does not depend on particle order. Periodic
+// ghosts are not counted: a link to a ghost links to its source (water connected across the period's ends is one
+// body).
 template <int D>
 SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, double floor_y, double band) {
   const auto& P = sim.particles;

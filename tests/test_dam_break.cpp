@@ -71,7 +71,11 @@ std::vector<double> smoothed(const Series& s, double T_max, double window) {
 // Largest difference of two smoothed series, absolute or relative to the first.
 double largest_difference(const std::vector<double>& a, const std::vector<double>& b, bool relative) {
   double d = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) d = std::max(d, std::abs(b[k] - a[k]) / (relative ? a[k] : 1.0));
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const double dk = std::abs(b[k] - a[k]) / (relative ? a[k] : 1.0);
+    if (!std::isfinite(dk)) return dk;  // a NaN height or front fails the comparison, not passes it
+    d = std::max(d, dk);
+  }
   return d;
 }
 

@@ -95,8 +95,8 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
   const CsvTable t = read_csv(out / "results.csv");
   EXPECT_EQ(t.header, (std::vector<std::string>{"run", "particle_spacing", "method.gradient", "outcome", "particles",
                                                 "steps", "setup_seconds", "wall_seconds", "cpu_seconds",
-                                                "particle_steps_per_second", "error", "failure_time",
-                                                "failure_check", "note"}));
+                                                "loop_cpu_seconds", "particle_steps_per_second", "error",
+                                                "failure_time", "failure_check", "note"}));
   ASSERT_EQ(t.rows.size(), 4u);
   const auto cell = [&](int row, const std::string& column) { return t.rows[row].at(t.column(column)); };
   EXPECT_EQ(cell(0, "outcome"), "inaccurate");
@@ -155,6 +155,7 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
             std::string::npos) << r.output;
   EXPECT_NE(r.output.find("this scene with those settings"), std::string::npos) << r.output;
   r = run_command(check + " --target-error 0.01");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("no run is within it; the smallest error measured is 0.07"), std::string::npos) << r.output;
   EXPECT_EQ(run_command(slide_binary() + " check " + dam_break_scene() + " --target-error 0.01").exit_code, 2);
 }
@@ -180,6 +181,26 @@ combinations:
   EXPECT_NE(t.rows[1][t.column("note")].find("method.wall_pressure"), std::string::npos) << t.rows[1][t.column("note")];
 }
 
+// A run folder made with other settings (the sweep file was edited since) is not taken as finished: it runs again.
+TEST(Sweep, AnEditedSweepRunsAgainWhatChanged) {
+  const fs::path dir = fresh_directory("sweep_edited");
+  const auto write = [&](const std::string& spacings) {
+    write_file(dir / "s.yaml", fmt::format("scene: {}\nset: {{end_time: 0.005, output.snapshots: false}}\n"
+                                           "vary: {{particle_spacing: [{}]}}\n",
+                                           dam_break_scene(), spacings));
+  };
+  const std::string sweep = slide_binary() + " sweep " + (dir / "s.yaml").string() + " --out " + (dir / "out").string();
+  write("0.011430, 0.005715");
+  ASSERT_EQ(run_command(sweep).exit_code, 0);
+  write("0.011430, 0.008");  // run_002 now means something else
+  const CommandResult r = run_command(sweep);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 finished already, 1 to run"), std::string::npos) << r.output;
+  const CsvTable t = read_csv(dir / "out/results.csv");
+  EXPECT_EQ(t.rows[1][t.column("particle_spacing")], "0.008");
+  EXPECT_EQ(t.rows[1][t.column("outcome")], "completed");
+}
+
 TEST(Sweep, ABadSweepExitsTwoAndWritesNothing) {
   const fs::path dir = fresh_directory("sweep_refused");
   write_file(dir / "s.yaml", fmt::format("scene: {}\nvary: {{particle_spacing: [-1]}}\n", dam_break_scene()));
@@ -189,6 +210,13 @@ TEST(Sweep, ABadSweepExitsTwoAndWritesNothing) {
   EXPECT_NE(r.output.find("particle_spacing"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_EQ(run_command(slide_binary() + " sweep --collect " + (dir / "nowhere").string()).exit_code, 1);
+  // Wrong YAML types exit 2 naming the key, not an exception's text.
+  write_file(dir / "t.yaml", "scene: [a, b]\nvary: {particle_spacing: [0.01]}\n");
+  const CommandResult t = run_command(slide_binary() + " sweep " + (dir / "t.yaml").string() + " --out " +
+                                      (dir / "out").string());
+  EXPECT_EQ(t.exit_code, 2) << t.output;
+  EXPECT_NE(t.output.find("scene: must be a single value"), std::string::npos) << t.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "tools/shell_quote.hpp"
+
 namespace slide::tools {
 
 bool run_plot_script(const std::string& script, const std::filesystem::path& dir) {
@@ -11,7 +13,7 @@ bool run_plot_script(const std::string& script, const std::filesystem::path& dir
     std::cerr << "slide: charts skipped (they need /usr/bin/python3 and " << path.string() << ")\n";
     return false;
   }
-  const std::string command = "/usr/bin/python3 '" + path.string() + "' '" + dir.string() + "' 1>&2";
+  const std::string command = "/usr/bin/python3 " + shell_quoted(path.string()) + " " + shell_quoted(dir.string()) + " 1>&2";
   if (std::system(command.c_str()) != 0) {
     std::cerr << "slide: charts failed (" << command << ")\n";
     return false;

@@ -2,10 +2,10 @@
 """Plots a finished sweep (slide sweep; its results.csv and plan.json) into its folder:
   accuracy_cost.png   error against time to answer (setup + loop wall seconds), log-log, one series per method
                       option (the varied keys other than the resolution key, particle_spacing unless the sweep's
-                      chart.resolution_key says otherwise), the Pareto front (no run both cheaper and more accurate)
+                      plots.resolution_key says otherwise), the Pareto front (no run both cheaper and more accurate)
                       marked and labelled; runs without an error (unstable, missing) are counted in the legend.
-  stability_map.png   the outcome of every run over two varied keys (the sweep's map.x and map.y, else the first
-                      two), one panel per value of a third (map.panels, else the third varied key): completed,
+  stability_map.png   the outcome of every run over two varied keys (the sweep's plots.map.x and .y, else the first
+                      two), one panel per value of a third (plots.map.panels, else the third varied key): completed,
                       inaccurate, unstable (with the time it failed), invalid (with the key it was refused on),
                       interrupted, missing.
 Usage: tools/plot_sweep.py SWEEP_DIR. Uses Debian's python3-matplotlib through /usr/bin/python3."""

@@ -169,6 +169,7 @@ int run_command(const RunArguments& args) {
   RunOutputs outputs(*scene, out);
 
   const auto loop_start = Clock::now();
+  const double cpu_at_loop_start = process_cpu_seconds();
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
@@ -208,6 +209,7 @@ int run_command(const RunArguments& args) {
     j["setup_seconds"] = setup_seconds;
     j["wall_seconds"] = wall;
     j["cpu_seconds"] = process_cpu_seconds();
+    j["loop_cpu_seconds"] = process_cpu_seconds() - cpu_at_loop_start;
     j["particle_steps_per_second"] = wall > 0 ? particle_steps / wall : 0.0;
     j["snapshots"] = outputs.snapshot_count();
     j["scene"] = to_json(scene->resolved);

@@ -43,7 +43,10 @@ std::string recommendation_report(const std::filesystem::path& dir, double targe
                     : "  no run has a measured error\n";
     return out;
   }
-  const double per_particle_step = best->cpu_seconds / (best->particles * best->steps);
+  // The loop's CPU time (setup, a settled start included, does not grow with the steps); the whole process's where a
+  // run.json predates loop_cpu_seconds.
+  const double loop_cpu = std::isfinite(best->loop_cpu_seconds) ? best->loop_cpu_seconds : best->cpu_seconds;
+  const double per_particle_step = loop_cpu / (best->particles * best->steps);
   out += fmt::format("  cheapest within it: {} ({}), error {:.4g}, {:.4g} s to answer for {:.0f} particles and {:.0f} "
                      "steps ({:.3g} us of CPU per particle-step)\n",
                      best->name, settings(*best), best->error, time_to_answer(*best), best->particles, best->steps,
@@ -57,7 +60,7 @@ std::string recommendation_report(const std::filesystem::path& dir, double targe
   }
   const double particles = fluid + boundary;
   out += fmt::format("  this scene with those settings (--set them, or put them in the scene): about {:.0f} particles x "
-                     "{:.0f} steps, {:.3g} CPU seconds at that cost per particle-step\n",
+                     "{:.0f} steps, {:.3g} CPU seconds of stepping at that cost per particle-step (setup not included)\n",
                      particles, steps, per_particle_step * particles * steps);
   return out;
 }

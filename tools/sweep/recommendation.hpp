@@ -18,7 +18,7 @@ inline double time_to_answer(const RunResult& r) { return r.setup_seconds + r.wa
 std::optional<RunResult> cheapest_within(const std::vector<RunResult>& results, double max_error);
 
 // What `slide check --target-error E --with SWEEP_DIR` prints: the cheapest run of the sweep in SWEEP_DIR within E,
-// its settings and cost, and that cost per particle-step (CPU seconds / (particles x steps)) applied to the checked
+// its settings and cost, and that cost per particle-step (the loop's CPU seconds / (particles x steps)) applied to the checked
 // scene (`fluid` and `boundary` particles, about `steps` steps, spacing `dp`) with the run's settings: where they
 // change the spacing to dp', the fluid particles scale by (dp / dp')^2 (2-D), the boundary ones (walls, bodies) by
 // dp / dp', and the steps by dp / dp' (the acoustic time step is proportional to the spacing). When no run is within

@@ -1,6 +1,7 @@
 #include "tools/sweep/sweep_command.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -54,22 +55,54 @@ pid_t spawn_run(const std::filesystem::path& program, const Sweep& s, const Swee
 volatile std::sig_atomic_t interrupted = 0;
 extern "C" void on_interrupt(int) { interrupted = 1; }
 
+// SIGINT and SIGTERM set `interrupted` for as long as it lives, without SA_RESTART, so that waitpid returns to the
+// loop; the earlier handlers come back after.
+class InterruptHandlers {
+ public:
+  InterruptHandlers() {
+    struct sigaction a {};
+    a.sa_handler = on_interrupt;
+    sigemptyset(&a.sa_mask);
+    a.sa_flags = 0;
+    interrupted = 0;
+    sigaction(SIGINT, &a, &previous_int_);
+    sigaction(SIGTERM, &a, &previous_term_);
+  }
+  ~InterruptHandlers() {
+    sigaction(SIGINT, &previous_int_, nullptr);
+    sigaction(SIGTERM, &previous_term_, nullptr);
+  }
+  InterruptHandlers(const InterruptHandlers&) = delete;
+  InterruptHandlers& operator=(const InterruptHandlers&) = delete;
+
+ private:
+  struct sigaction previous_int_ {}, previous_term_ {};
+};
+
 // Runs the pending runs, `jobs` at a time. Returns the exit code (0, 1 or 130).
 int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int threads) {
   std::vector<const SweepRun*> pending;
   for (const auto& r : s.runs)
-    if (!run_is_finished(run_folder(dir, r))) pending.push_back(&r);
+    if (!run_is_finished(run_folder(dir, r), r)) pending.push_back(&r);
   std::cerr << fmt::format("slide sweep {}: {} runs, {} finished already, {} to run ({} at once, {} threads each)\n",
                            s.name, s.runs.size(), s.runs.size() - pending.size(), pending.size(), jobs, threads);
   const auto program = this_program();
   std::map<pid_t, std::pair<const SweepRun*, Clock::time_point>> running;
   std::size_t next = 0, done = 0;
   int code = 0;
-  auto previous_int = std::signal(SIGINT, on_interrupt), previous_term = std::signal(SIGTERM, on_interrupt);
+  const InterruptHandlers handlers;
+  bool forwarded = false;
   while (next < pending.size() || !running.empty()) {
+    // Interrupted (Ctrl-C reaches the runs too; a scheduler's SIGTERM may reach only us): the running runs are asked
+    // to stop as Ctrl-C stops them (a final snapshot, exit 130), and are waited for.
+    if (interrupted && !forwarded) {
+      for (const auto& [pid, run] : running) kill(pid, SIGINT);
+      forwarded = true;
+    }
     while (!interrupted && next < pending.size() && running.size() < std::size_t(jobs)) {
       const SweepRun& r = *pending[next++];
       std::filesystem::remove_all(run_folder(dir, r));  // what an unfinished attempt left
+      std::filesystem::remove(dir / "logs" / (r.name + ".exit"));
       running[spawn_run(program, s, r, dir, threads)] = {&r, Clock::now()};
     }
     int status = 0;
@@ -96,8 +129,6 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
     if (exit_code == 130 || exit_code == 128 + SIGINT || exit_code == 128 + SIGTERM) code = 130;
     else if (exit_code != 0 && exit_code != 2 && exit_code != 3 && code == 0) code = 1;
   }
-  std::signal(SIGINT, previous_int);
-  std::signal(SIGTERM, previous_term);
   return interrupted ? 130 : code;
 }
 

@@ -34,6 +34,12 @@ YAML::Node load_yaml(const std::filesystem::path& file) {
   }
 }
 
+// A scalar's text, or a SceneError naming the key.
+std::string text(const YAML::Node& n, const std::string& key) {
+  if (!n || !n.IsScalar()) throw SceneError(key, "must be a single value (a name or a number)");
+  return n.Scalar();
+}
+
 std::filesystem::path beside(const std::filesystem::path& sweep_file, const std::string& name) {
   const std::filesystem::path p(name);
   return std::filesystem::absolute(p.is_absolute() ? p : sweep_file.parent_path() / p).lexically_normal();
@@ -100,7 +106,7 @@ ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
     if (k != "measure" && k != "reference" && k != "threshold" && k != "T_max")
       throw SceneError("error." + k, "unknown key (known: measure, reference, threshold, T_max)");
   }
-  const std::string name = e["measure"] ? e["measure"].as<std::string>() : "none";
+  const std::string name = e["measure"] ? text(e["measure"], "error.measure") : "none";
   const auto measure = error_measure_names.find(name);
   if (!measure)
     throw SceneError("error.measure", fmt::format("unknown measure \"{}\" (one of: {})", name,
@@ -116,7 +122,7 @@ ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
   if (!(spec.T_max > 0.0) || !std::isfinite(spec.T_max)) throw SceneError("error.T_max", "must be positive");
   if (spec.measure == ErrorMeasure::dam_break_front) {
     if (!e["reference"]) throw SceneError("error.reference", "dam_break_front needs the reference CSV file");
-    spec.reference = beside(file, e["reference"].as<std::string>());
+    spec.reference = beside(file, text(e["reference"], "error.reference"));
     if (!std::filesystem::is_regular_file(spec.reference))
       throw SceneError("error.reference", "no file " + spec.reference.string());
   }
@@ -128,7 +134,7 @@ PlotSpec read_plots(const YAML::Node& p, const std::vector<std::string>& varied)
   if (!p) return spec;
   if (!p.IsMap()) throw SceneError("plots", "must be a map (resolution_key, map)");
   auto varied_key = [&](const YAML::Node& n, const std::string& where) {
-    const std::string k = n.as<std::string>();
+    const std::string k = text(n, where);
     if (std::find(varied.begin(), varied.end(), k) == varied.end())
       throw SceneError(where, "\"" + k + "\" is not a varied key");
     return k;
@@ -136,8 +142,9 @@ PlotSpec read_plots(const YAML::Node& p, const std::vector<std::string>& varied)
   for (const auto& kv : p) {
     const std::string k = kv.first.as<std::string>();
     if (k == "resolution_key") {
-      spec.resolution_key = kv.second.as<std::string>();
+      spec.resolution_key = text(kv.second, "plots.resolution_key");
     } else if (k == "map") {
+      if (!kv.second.IsMap()) throw SceneError("plots.map", "must be a map (x, y, panels)");
       for (const auto& m : kv.second) {
         const std::string axis = m.first.as<std::string>();
         if (axis == "x") spec.map_x = varied_key(m.second, "plots.map.x");
@@ -154,7 +161,33 @@ PlotSpec read_plots(const YAML::Node& p, const std::vector<std::string>& varied)
 
 }  // namespace
 
+// finest_run compares with the run of the smallest resolution-key value: the key must be varied, every value a number.
+static void check_resolution_key(const Sweep& s) {
+  if (s.error.measure != ErrorMeasure::finest_run) return;
+  const auto key = std::find(s.varied_keys.begin(), s.varied_keys.end(), s.plots.resolution_key);
+  if (key == s.varied_keys.end())
+    throw SceneError("plots.resolution_key", "finest_run needs the resolution key (\"" + s.plots.resolution_key +
+                                                 "\") among the varied keys");
+  for (const auto& r : s.runs) {
+    const std::string& v = r.values[key - s.varied_keys.begin()];
+    char* end = nullptr;
+    std::strtod(v.c_str(), &end);
+    if (!v.empty() && (end == v.c_str() || *end != '\0'))
+      throw SceneError(s.plots.resolution_key, "\"" + v + "\" is not a number (finest_run compares the smallest)");
+  }
+}
+
+static Sweep read_sweep(const std::filesystem::path& file);
+
 Sweep load_sweep(const std::filesystem::path& file) {
+  try {
+    return read_sweep(file);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("<file>", std::string("cannot read the sweep file: ") + e.what());
+  }
+}
+
+static Sweep read_sweep(const std::filesystem::path& file) {
   const YAML::Node root = load_yaml(file);
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
@@ -165,7 +198,7 @@ Sweep load_sweep(const std::filesystem::path& file) {
   Sweep s;
   s.name = file.stem().string();
   if (!root["scene"]) throw SceneError("scene", "required: the base scene file");
-  s.scene = beside(file, root["scene"].as<std::string>());
+  s.scene = beside(file, text(root["scene"], "scene"));
   const std::vector<std::string> fixed = assignments(root["set"], "set");
   if (root["vary"].IsDefined() == root["combinations"].IsDefined())
     throw SceneError("vary", "give exactly one of vary (a full grid) and combinations (a list of runs)");
@@ -173,6 +206,7 @@ Sweep load_sweep(const std::filesystem::path& file) {
   else expand_list(root["combinations"], s);
   s.error = read_error(root["error"], file);
   s.plots = read_plots(root["plots"], s.varied_keys);
+  check_resolution_key(s);
   for (std::size_t i = 0; i < s.runs.size(); ++i) {
     SweepRun& r = s.runs[i];
     r.name = fmt::format("run_{:03d}", i + 1);

@@ -17,7 +17,9 @@
 //     map: {x: particle_spacing, y: method.gradient, panels: method.wall_pressure}   # default: the first three
 //
 // Keys are scene key paths as `--set` takes them; values are YAML (a number, a name, a list). Every run's scene is
-// checked before anything runs: a bad sweep file or combination is a SceneError (exit 2) naming the key.
+// checked against the schema before anything runs: a bad sweep file, key or value is a SceneError (exit 2) naming the
+// key. A combination that passes the schema but that the scene builder refuses (the mirror wall model on the
+// hexagonal lattice) runs, exits 2 by itself, and is `invalid` in the results.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "tools/atomic_file.hpp"
+#include "tools/shell_quote.hpp"
 
 namespace slide::tools {
 
@@ -56,14 +57,6 @@ Sweep read_plan(const std::filesystem::path& dir) {
     throw std::runtime_error((dir / "plan.json").string() + ": " + ex.what());
   }
 }
-
-namespace {
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-}  // namespace
 
 std::string run_command_line(const std::filesystem::path& program, const Sweep& s, const SweepRun& r,
                              const std::filesystem::path& dir, int threads) {

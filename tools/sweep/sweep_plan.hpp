@@ -1,6 +1,6 @@
 #pragma once
 // A sweep's folder: plan.json (the expanded sweep: what `--collect` reads back, wherever the runs were made),
-// jobs.txt (one shell command per run, for xargs -P, GNU parallel or a cluster's job array) and runs/<name>/ (each
+// jobs.txt (one shell command per run, for xargs -d '\n' -P, GNU parallel or a cluster's job array) and runs/<name>/ (each
 // run's own folder).
 #include <filesystem>
 #include <string>

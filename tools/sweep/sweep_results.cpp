@@ -17,11 +17,14 @@ namespace {
 
 using json = nlohmann::json;
 
-std::optional<json> read_run_json(const std::filesystem::path& run_folder) {
+// The run's run.json, if there is one made with this run's overrides.
+std::optional<json> read_run_json(const std::filesystem::path& run_folder, const SweepRun& run) {
   std::ifstream in(run_folder / "run.json");
   if (!in) return std::nullopt;
   try {
-    return json::parse(in);
+    json j = json::parse(in);
+    if (!j.contains("overrides") || j["overrides"] != json(run.overrides)) return std::nullopt;
+    return j;
   } catch (const json::exception&) {
     return std::nullopt;  // a run.json being replaced, or damaged: treated as missing
   }
@@ -75,8 +78,8 @@ std::string number(double v) { return std::isnan(v) ? "" : fmt::format("{:.6g}",
 
 }  // namespace
 
-bool run_is_finished(const std::filesystem::path& run_folder) {
-  const auto j = read_run_json(run_folder);
+bool run_is_finished(const std::filesystem::path& run_folder, const SweepRun& run) {
+  const auto j = read_run_json(run_folder, run);
   if (!j || !j->contains("status")) return false;
   const std::string status = (*j)["status"].get<std::string>();
   return status == "completed" || status == "unstable";
@@ -88,15 +91,19 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   r.name = run.name;
   r.values = run.values;
   const std::filesystem::path run_folder = dir / "runs" / run.name;
-  const auto j = read_run_json(run_folder);
+  const auto j = read_run_json(run_folder, run);
+  const std::string exit_code = read_text(dir / "logs" / (run.name + ".exit"));
   if (!j) {
-    if (read_text(dir / "logs" / (run.name + ".exit")) == "2") {
+    if (exit_code == "2") {
       r.outcome = RunOutcome::invalid;
       // "slide: invalid scene FILE: KEY: what" -> "KEY: what"
       std::string line = last_line(read_text(dir / "logs" / (run.name + ".log")));
       const std::string prefix = "slide: invalid scene " + s.scene.string() + ": ";
       if (line.rfind(prefix, 0) == 0) line = line.substr(prefix.size());
       r.note = line;
+    } else if (!exit_code.empty() && exit_code != "0" && exit_code != "3" && exit_code != "130") {
+      r.outcome = RunOutcome::failed;
+      r.note = "exit " + exit_code + ": " + last_line(read_text(dir / "logs" / (run.name + ".log")));
     }
     return r;
   }
@@ -105,6 +112,7 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   r.setup_seconds = number_or_nan(*j, "setup_seconds");
   r.wall_seconds = number_or_nan(*j, "wall_seconds");
   r.cpu_seconds = number_or_nan(*j, "cpu_seconds");
+  r.loop_cpu_seconds = number_or_nan(*j, "loop_cpu_seconds");
   r.particle_steps_per_second = number_or_nan(*j, "particle_steps_per_second");
   const std::string status = j->value("status", "");
   if (status == "unstable") {
@@ -116,6 +124,9 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   } else if (status == "completed") {
     measure_error(s, run_folder, finest, r);
     r.outcome = r.error > s.error.threshold ? RunOutcome::inaccurate : RunOutcome::completed;
+  } else if (!exit_code.empty() && exit_code != "0" && exit_code != "3" && exit_code != "130") {
+    r.outcome = RunOutcome::failed;  // it died while running: run.json still says so
+    r.note = "exit " + exit_code;
   } else {
     r.outcome = RunOutcome::interrupted;
   }
@@ -131,9 +142,9 @@ const SweepRun* finest_completed_run(const Sweep& s, const std::filesystem::path
   const SweepRun* finest = nullptr;
   double smallest = std::numeric_limits<double>::infinity();
   for (const auto& run : s.runs) {
-    const auto j = read_run_json(dir / "runs" / run.name);
+    const auto j = read_run_json(dir / "runs" / run.name, run);
     if (!j || j->value("status", "") != "completed" || run.values[k].empty()) continue;
-    const double v = std::stod(run.values[k]);
+    const double v = std::strtod(run.values[k].c_str(), nullptr);  // checked numeric by load_sweep
     if (v < smallest) smallest = v, finest = &run;
   }
   return finest;
@@ -165,14 +176,15 @@ void write_results_csv(const Sweep& s, const std::vector<RunResult>& results, co
   std::vector<std::string> header{"run"};
   for (const auto& k : s.varied_keys) header.push_back(cell(k));
   for (const char* c : {"outcome", "particles", "steps", "setup_seconds", "wall_seconds", "cpu_seconds",
-                        "particle_steps_per_second", "error", "failure_time", "failure_check", "note"})
+                        "loop_cpu_seconds", "particle_steps_per_second", "error", "failure_time", "failure_check",
+                        "note"})
     header.emplace_back(c);
   std::string text = fmt::format("{}\n", fmt::join(header, ","));
   for (const auto& r : results) {
     std::vector<std::string> row{r.name};
     for (const auto& v : r.values) row.push_back(cell(v));
     row.emplace_back(run_outcome_names.name(r.outcome));
-    for (const double v : {r.particles, r.steps, r.setup_seconds, r.wall_seconds, r.cpu_seconds,
+    for (const double v : {r.particles, r.steps, r.setup_seconds, r.wall_seconds, r.cpu_seconds, r.loop_cpu_seconds,
                            r.particle_steps_per_second, r.error, r.failure_time})
       row.push_back(number(v));
     row.push_back(cell(r.failure_check));

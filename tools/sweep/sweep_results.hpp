@@ -14,13 +14,15 @@ namespace slide::tools {
 // completed: ran to its end time (and, with a threshold, its error is within it); inaccurate: completed with an error
 // above the sweep's threshold; unstable: stopped by an instability check (exit 3); invalid: its scene was refused
 // (exit 2: a combination the method does not allow, as the mirror wall model on the hexagonal lattice); interrupted:
-// stopped by a signal or still running; missing: no run.json (not run yet, or not copied back).
-enum class RunOutcome { completed, inaccurate, unstable, invalid, interrupted, missing };
+// stopped by a signal or still running; failed: exited otherwise (a crash, killed: its exit code in the note);
+// missing: no run.json of this run's settings (not run yet, not copied back, or made by an earlier version of the
+// sweep file with other settings).
+enum class RunOutcome { completed, inaccurate, unstable, invalid, interrupted, failed, missing };
 
 inline constexpr auto run_outcome_names = make_name_table<RunOutcome>(
     std::pair{RunOutcome::completed, "completed"}, std::pair{RunOutcome::inaccurate, "inaccurate"},
     std::pair{RunOutcome::unstable, "unstable"}, std::pair{RunOutcome::invalid, "invalid"},
-    std::pair{RunOutcome::interrupted, "interrupted"},
+    std::pair{RunOutcome::interrupted, "interrupted"}, std::pair{RunOutcome::failed, "failed"},
     std::pair{RunOutcome::missing, "missing"});
 
 struct RunResult {
@@ -29,15 +31,17 @@ struct RunResult {
   std::vector<std::string> values;  // of the varied keys
   RunOutcome outcome = RunOutcome::missing;
   double particles = nan, steps = nan;
-  double setup_seconds = nan, wall_seconds = nan, cpu_seconds = nan, particle_steps_per_second = nan;
+  double setup_seconds = nan, wall_seconds = nan, particle_steps_per_second = nan;
+  double cpu_seconds = nan, loop_cpu_seconds = nan;  // the whole process's, and the step loop's
   double error = nan;         // the sweep's measure; NaN without one or where it could not be computed
   double failure_time = nan;  // s, unstable runs
   std::string failure_check;  // unstable runs: the check that fired
   std::string note;           // why the error is missing, or why the run was refused
 };
 
-// Whether a run's folder holds a finished run (completed or unstable: running it again gives the same).
-bool run_is_finished(const std::filesystem::path& run_folder);
+// Whether a run's folder holds a finished run of these settings (completed or unstable: running it again gives the
+// same). A run.json whose overrides differ (the sweep file was edited) is not this run's.
+bool run_is_finished(const std::filesystem::path& run_folder, const SweepRun& run);
 
 // A run's row from the sweep folder DIR: DIR/runs/<name>/ and, for a refused run, DIR/logs/<name>.exit and .log.
 // `finest`: the reference of the finest_run measure (null: none completed).
@@ -46,7 +50,7 @@ RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesy
 std::vector<RunResult> collect_results(const Sweep& sweep, const std::filesystem::path& dir);
 
 // results.csv: run, the varied keys, outcome, particles, steps, setup_seconds, wall_seconds, cpu_seconds,
-// particle_steps_per_second, error, failure_time, failure_check, note. Cells never hold a comma (a list value's
+// loop_cpu_seconds, particle_steps_per_second, error, failure_time, failure_check, note. Cells never hold a comma (a list value's
 // commas become ';').
 void write_results_csv(const Sweep& sweep, const std::vector<RunResult>& results, const std::filesystem::path& file);
 
