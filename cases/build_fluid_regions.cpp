@@ -36,17 +36,25 @@ int body_near(const SceneBuild& b, const Vec<2>& p) {
   return -1;
 }
 
-// The particles whose cell lies inside [min, max]. Half the extent of a particle's cell: dp / 2 on the square
-// lattice; half a spacing across and half a row spacing up on the hexagonal one.
+// The particles of [min, max]: on the square lattice those whose cell (dp / 2 each way) lies inside; on the hexagonal
+// lattice those whose centre lies inside, as for polygons: its walls are cut from the same lattice, so a wall face
+// splits the lattice and the water fills it up to the wall, and a free side loses or gains half a cell on average.
+// (Whole cells on the hexagonal lattice lost up to a cell layer on two sides: 5.5 % of the gated dam break's water.)
+// A side on the low end of a periodic x is the period's [x_min, x_max): a centre on it is inside (its image on
+// x_max is not).
 RegionShape rectangle(const SceneBuild& b, const YAML::Node& rn, const std::string& path) {
   const Vec<2> lo = vec2(rn["min"]), hi = vec2(rn["max"]);
   if (!(lo[0] < hi[0] && lo[1] < hi[1])) throw SceneError(path + ".max", "must exceed min in x and y");
-  const LatticeKind lattice = b.sim->options.lattice;
-  const double half_x = 0.5 * nearest_spacing(lattice, b.dp), half_y = 0.5 * row_spacing(lattice, b.dp);
-  const double e = 1e-9 * b.dp;
-  return {lo, hi, [lo, hi, half_x, half_y, e](const Vec<2>& p) {
-            return p[0] - half_x >= lo[0] - e && p[0] + half_x <= hi[0] + e && p[1] - half_y >= lo[1] - e &&
-                   p[1] + half_y <= hi[1] + e;
+  const bool whole_cells = b.sim->options.lattice == LatticeKind::square;
+  // Whole cells: a cell edge on the rectangle's side counts as inside (e > 0); centres: a centre on a side, where a
+  // wall cut from the lattice puts its own particle, does not (e < 0).
+  const double half = whole_cells ? 0.5 * b.dp : 0.0;
+  const double e = (whole_cells ? 1e-9 : -1e-9) * b.dp;
+  const bool on_period_start = b.period_x && std::abs(lo[0] - b.period_x->x_min) <= 1e-9 * b.dp;
+  const double e_low_x = on_period_start ? std::abs(e) : e;
+  return {lo, hi, [lo, hi, half, e, e_low_x](const Vec<2>& p) {
+            return p[0] - half >= lo[0] - e_low_x && p[0] + half <= hi[0] + e && p[1] - half >= lo[1] - e &&
+                   p[1] + half <= hi[1] + e;
           }};
 }
 

@@ -2,6 +2,9 @@
 // and what the hexagonal lattice demands of the other choices.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "cases/scene_build.hpp"
 
 namespace slide::cases {
@@ -65,6 +68,25 @@ void check_lattice_choices(SceneBuild& b) {
     if (b.r["walls"][w]["layers"].as<long>() != 0)
       throw SceneError(fmt::format("walls[{}].layers", w),
                        "with lattice: hexagonal walls are cut from the lattice to the depth re; leave layers at 0");
+}
+
+// A periodic domain's period must hold a whole number of the lattice's columns (dp apart on the square lattice,
+// 1.0746 dp on the hexagonal one): otherwise the lattice does not join across the seam, and the particles either side
+// of it stand too close or too far apart (a 0.2 m period at dp 0.01 on the hexagonal lattice holds 18.6 columns: a
+// seam 1.6 columns wide in every row).
+void check_period(SceneBuild& b) {
+  const YAML::Node d = b.r["domain"];
+  if (!d || !d["periodic_x"].as<bool>()) return;
+  const double x_min = d["min"][0].as<double>(), x_max = d["max"][0].as<double>();
+  const double column = nearest_spacing(b.options().lattice, b.dp), columns = (x_max - x_min) / column;
+  const double whole = std::round(columns);
+  if (whole < 1.0 || std::abs(columns - whole) > 1e-6)
+    throw SceneError("domain.max", fmt::format("the period {} m holds {:.4f} columns of the {} lattice (spacing {:.6g} "
+                                               "m); make it a whole number of columns, e.g. max.x = {:.6f} or {:.6f} m",
+                                               x_max - x_min, columns, to_string(b.options().lattice), column,
+                                               x_min + std::max(1.0, std::floor(columns)) * column,
+                                               x_min + std::max(2.0, std::ceil(columns)) * column));
+  b.period_x = PeriodicX{x_min, x_max};
 }
 
 }  // namespace slide::cases

@@ -34,13 +34,20 @@ std::vector<BoundaryPoint> wall_points(const SceneBuild& b, const YAML::Node& wn
   const FluidOptions<2>& opt = b.sim->options;
   const long layers_key = wn["layers"].as<long>();
   const int layers = layers_key == 0 ? boundary_layers(opt.re_over_dp) : static_cast<int>(layers_key);
+  std::vector<BoundaryPoint> pts;
   try {
-    return b.hexagonal ? lattice_boundary(face, left, b.dp, opt.re_over_dp * b.dp, opt.lattice,
-                                          b.scene->lattice_offset)
-                       : polyline_boundary(face, left, b.dp, layers);
+    pts = b.hexagonal ? lattice_boundary(face, left, b.dp, opt.re_over_dp * b.dp, opt.lattice, b.scene->lattice_offset)
+                      : polyline_boundary(face, left, b.dp, layers);
   } catch (const std::invalid_argument& e) {
     throw SceneError(fmt::format("walls[{}].points", w), e.what());
   }
+  // Along a periodic x the wall's points are those of one period, [x_min, x_max) (the periodic images supply the
+  // rest), so a wall may run past the period's ends and joins itself across the seam.
+  if (b.period_x) {
+    const double e = 1e-9 * b.dp, x_min = b.period_x->x_min - e, x_max = b.period_x->x_max - e;
+    std::erase_if(pts, [&](const BoundaryPoint& p) { return p.position[0] < x_min || p.position[0] >= x_max; });
+  }
+  return pts;
 }
 
 // Boundary particles of the first phase's density; they carry no viscosity of their own. A point within dp/2 of a

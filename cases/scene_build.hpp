@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "cases/scene.hpp"
 #include "cases/scene_geometry.hpp"
 #include "coupling/rigid_bodies.hpp"
+#include "fluid/periodic.hpp"
 
 namespace slide::cases {
 
@@ -49,6 +51,8 @@ struct SceneBuild {
   double dp = 0.0;
   bool hexagonal = false;
   InitialState initial_state = default_initial_state;
+  // Set by check_period: the period [x_min, x_max) of a domain periodic in x; unset otherwise.
+  std::optional<PeriodicX> period_x;
   // Set by read_phases.
   ScenePhases phases;
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.
@@ -78,6 +82,7 @@ struct SceneBuild {
 // The steps, in the order build_scene runs them. Each throws SceneError naming the key at fault.
 void read_fluid_options(SceneBuild& b);        // build_options.cpp
 void check_lattice_choices(SceneBuild& b);     // build_options.cpp
+void check_period(SceneBuild& b);             // build_options.cpp
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
 void build_walls(SceneBuild& b);               // build_walls.cpp
 void build_slides_and_bodies(SceneBuild& b);   // build_bodies.cpp

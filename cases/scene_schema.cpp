@@ -272,8 +272,10 @@ Schema domain_schema() {
       "box enlarged by 4 re on every side and by half its height upwards",
       {{"min", S::vector("lower corner", "m", 2, std::nullopt)},
        {"max", S::vector("upper corner", "m", 2, std::nullopt)},
-       {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x] (fluid/periodic.hpp): walls along "
-                                 "the channel must lie within it; no rigid bodies", false)}},
+       {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must "
+                                 "hold a whole number of lattice columns (dp apart, or 1.0746 dp on the hexagonal "
+                                 "lattice); walls along the channel may run past its ends (their points in the period "
+                                 "are kept); no rigid bodies", false)}},
       false);
 }
 

@@ -11,6 +11,13 @@
 
 namespace slide::testing {
 
+// The scene of `yaml`, written to a fresh folder named `name`.
+inline std::unique_ptr<cases::Scene> build_scene_text(const std::string& name, const std::string& yaml) {
+  const auto dir = fresh_directory(name);
+  write_file(dir / "s.yaml", yaml);
+  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+}
+
 inline std::unique_ptr<cases::Scene> load_shipped_scene(const std::string& name,
                                                         const std::vector<std::string>& overrides = {}) {
   return cases::build_scene(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");

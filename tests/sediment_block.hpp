@@ -1,5 +1,5 @@
 #pragma once
-// What the deformable-slide tests share: a scene built from YAML text, and the slide's particles (its phase) by id,
+// What the deformable-slide tests share: the slide's particles (its phase) by id,
 // centre of mass and largest displacement (tests/test_sediment_block.cpp, tests/test_basal_friction.cpp).
 #include <algorithm>
 #include <memory>
@@ -7,16 +7,9 @@
 #include <unordered_map>
 
 #include "cases/scene.hpp"
-#include "tests/cli_helpers.hpp"
+#include "tests/scene_runner.hpp"
 
 namespace slide::testing {
-
-// The scene of `yaml`, written to a fresh folder named `name`.
-inline std::unique_ptr<cases::Scene> build_scene_text(const std::string& name, const std::string& yaml) {
-  const auto dir = fresh_directory(name);
-  write_file(dir / "s.yaml", yaml);
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
-}
 
 // The positions of the slide's particles by id (periodic ghosts, fluid/periodic.hpp, are not particles of their own:
 // real particles only, here and below).

@@ -43,8 +43,9 @@ void expect_invalid(const CommandResult& r, const std::string& key, const std::s
 TEST(Cli, GoodSceneChecks) {
   const CommandResult r = check_scene(kGoodScene);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  // The hexagonal lattice (columns 1.0746 dp apart, rows 0.9306 dp) fits 85 points in the 10 dp x 10 dp column.
-  EXPECT_NE(r.output.find("85 fluid"), std::string::npos) << r.output;
+  // The 10 dp x 10 dp column holds the hexagonal lattice's points whose centre lies inside: rows 0.9306 dp apart
+  // from 0.465 dp (11 rows up to 9.77 dp), columns 1.0746 dp apart (9 in each row), so 99 for its 100 dp^2.
+  EXPECT_NE(r.output.find("99 fluid"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("10 sqrt(g H)"), std::string::npos) << r.output;
 }
 

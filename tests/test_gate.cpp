@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "coupling/advance.hpp"
+#include "fluid/lattice.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
 
@@ -72,7 +75,11 @@ TEST(Gate, NeedsTheSettledStartAndNoPeriodicDomain) {
   CommandResult r = run_command(slide_binary() + " check " + (dir / "s.yaml").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("walls[0].gate"), std::string::npos) << r.output;
-  write_file(dir / "p.yaml", gated_column("settled") + "domain: {min: [-0.1, -0.1], max: [0.6, 0.5], periodic_x: true}\n");
+  // A period of 65 columns of the hexagonal lattice (0.698 m): a period the lattice fits (cases/build_options.cpp).
+  const double period_end = -0.1 + 65.0 * nearest_spacing(LatticeKind::hexagonal, 0.01);
+  write_file(dir / "p.yaml", gated_column("settled") +
+                                 fmt::format("domain: {{min: [-0.1, -0.1], max: [{:.17g}, 0.5], periodic_x: true}}\n",
+                                             period_end));
   r = run_command(slide_binary() + " check " + (dir / "p.yaml").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("walls[0].gate"), std::string::npos) << r.output;

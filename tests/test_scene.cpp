@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
 
 #include "fluid/lattice.hpp"
 #include "tests/cli_helpers.hpp"
@@ -116,6 +120,53 @@ walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
   // rows, (i + 1) a in odd ones, a = 0.10746 m, below x = 1 m).
   auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
   EXPECT_EQ(scene->fluid_count, 5u * 9u);
+}
+
+// A periodic domain's period holds a whole number of lattice columns, or the scene is refused naming domain.max;
+// then the layer and its floor join across the seam: every row holds the same number of points, and no two
+// particles (periodic images included) stand closer than a spacing or leave a gap wider than one.
+TEST(Scene, PeriodicDomainJoinsTheLatticeAcrossItsSeam) {
+  const double dp = 0.01, a = nearest_spacing(LatticeKind::hexagonal, dp);
+  auto layer = [](double period) {
+    return fmt::format(R"(particle_spacing: 0.01
+end_time: 1
+lattice: hexagonal
+domain: {{min: [0, -0.05], max: [{p:.17g}, 0.3], periodic_x: true}}
+fluid:
+  phases: [{{name: water}}]
+  regions: [{{type: rectangle, min: [0, 0], max: [{p:.17g}, 0.1]}}]
+walls: [{{name: floor, points: [[-0.05, 0], [{end:.17g}, 0]]}}]
+method: {{initial_state: lattice}}
+)",
+                       fmt::arg("p", period), fmt::arg("end", period + 0.05));
+  };
+  const auto dir = fresh_directory("periodic_seam");
+  write_file(dir / "s.yaml", layer(0.2));  // 18.61 columns
+  try {
+    cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+    ADD_FAILURE() << "expected a SceneError for domain.max";
+  } catch (const cases::SceneError& e) {
+    EXPECT_EQ(e.key_path, "domain.max");
+    EXPECT_NE(std::string(e.what()).find("whole number of columns"), std::string::npos) << e.what();
+  }
+  const double period = 19.0 * a;
+  auto scene = build_scene_text("periodic_seam", layer(period));
+  const auto& P = scene->simulation->particles;
+  std::map<long, int> per_row;  // row index -> points (fluid and wall alike)
+  double closest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    EXPECT_GE(P.position[i][0], 0.0);
+    EXPECT_LT(P.position[i][0], period);
+    ++per_row[std::lround(P.position[i][1] / row_spacing(LatticeKind::hexagonal, dp) - 0.5)];
+    for (std::size_t j = 0; j < i; ++j) {
+      Vec<2> d = P.position[i] - P.position[j];
+      d[0] -= period * std::round(d[0] / period);
+      closest = std::min(closest, d.norm());
+    }
+  }
+  EXPECT_NEAR(closest, a, 1e-9 * dp);
+  for (const auto& [row, count] : per_row) EXPECT_EQ(count, 19) << "row " << row;
+  EXPECT_EQ(scene->fluid_count, 19u * 11u);  // rows 0.9306 dp apart from 0.465 dp: 11 below 0.1 m
 }
 
 // With a body on the hexagonal lattice the rows are moved so that the water under the body starts dp / 2 below its
