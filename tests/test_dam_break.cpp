@@ -7,6 +7,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "cases/csv_table.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tools/measures/dam_break_front.hpp"
@@ -84,11 +86,14 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
 // particles' scale: a change of g by 1e-12 of itself changes them by 2-6 % of 2a and of Z at T <= 3 (measured
 // here, a/40, point by point; 1e-14 does the same), so no two runs can agree within 1 % point by point. What can be
 // asserted: over T <= 3, averaged over windows of Delta T = 0.5, the free-slip run differs from the no-slip run by no
-// more than the larger of two no-slip runs with g changed by +-1e-12 do. Measured (stop 20): height 1.40 % of 2a
-// against 3.36 / 2.26 %, front 0.96 % against 1.66 / 0.44 % (relative). On the shipped square-lattice method
+// more than the largest of four no-slip runs with g changed by +-1e-12 and +-1e-14 do. Measured (stop 21, the column
+// filled to 796 of its 800 dp^2): free slip moves the height by 1.54 % of 2a and the front by 0.69 % (relative), the
+// four perturbed runs by 1.12 / 1.63 / 0.71 / 0.86 % and 0.71 / 0.17 / 1.09 / 0.70 %: free slip is one more sample
+// of the same spread. On the shipped square-lattice method
 // (cases/dam_break_2d.yaml) the same comparison fails: free slip moves its smoothed front by 6.30 % against a spread
-// of 1.82 / 1.92 %, a wall effect that method has and the default does not (its height: 3.37 % against 0.86 / 3.78 %).
-// About 4 minutes of one core (each run settles for 1 s first).
+// of 1.82 / 1.92 % (g +-1e-12, stop 20), a wall effect that method has and the default does not (its height: 3.37 %
+// against 0.86 / 3.78 %).
+// About 5 minutes of one core (six runs, each settling for 1 s first).
 // cases/dam_break_gated_2d.yaml at a/40 to T = 3.05.
 TEST(DamBreak, WallSlipChangesNoMoreThanTheRunToRunSpread) {
   const fs::path dir = fresh_directory("dam_break_slip");
@@ -105,17 +110,22 @@ TEST(DamBreak, WallSlipChangesNoMoreThanTheRunToRunSpread) {
   };
   const auto no_slip = run("no_slip", "");
   const auto free_slip = run("free_slip", " --set method.wall_slip=free_slip");
-  const auto heavier = run("g_plus", " --set gravity=[0,-9.81000000001]");
-  const auto lighter = run("g_minus", " --set gravity=[0,-9.80999999999]");
+  // The spread of the chaos: four no-slip runs with g changed by +-1e-12 and +-1e-14 of itself.
+  std::vector<std::pair<std::vector<double>, std::vector<double>>> perturbed;
+  for (const std::string g : {"9.81000000001", "9.80999999999", "9.8100000000001", "9.8099999999999"})
+    perturbed.push_back(run("g_" + g, " --set gravity=[0,-" + g + "]"));
   const double height_slip = largest_difference(no_slip.first, free_slip.first, false);
-  const double height_spread = std::max(largest_difference(no_slip.first, heavier.first, false),
-                                        largest_difference(no_slip.first, lighter.first, false));
   const double front_slip = largest_difference(no_slip.second, free_slip.second, true);
-  const double front_spread = std::max(largest_difference(no_slip.second, heavier.second, true),
-                                       largest_difference(no_slip.second, lighter.second, true));
+  double height_spread = 0.0, front_spread = 0.0;
+  std::string spreads;
+  for (const auto& p : perturbed) {
+    const double h = largest_difference(no_slip.first, p.first, false), z = largest_difference(no_slip.second, p.second, true);
+    height_spread = std::max(height_spread, h), front_spread = std::max(front_spread, z);
+    spreads += fmt::format(" {:.2f}/{:.2f}", 100 * h, 100 * z);
+  }
   std::printf("dam break a/40, T <= 3, smoothed over Delta T = 0.5: free against no slip: height %.2f %% of 2a, "
-              "front %.2f %%; g +-1e-12: height %.2f %%, front %.2f %%\n",
-              100 * height_slip, 100 * front_slip, 100 * height_spread, 100 * front_spread);
+              "front %.2f %%; g * (1 +-1e-12), (1 +-1e-14), height/front %%:%s\n",
+              100 * height_slip, 100 * front_slip, spreads.c_str());
   EXPECT_LE(height_slip, height_spread);
   EXPECT_LE(front_slip, front_spread);
 }
