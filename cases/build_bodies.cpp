@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -256,6 +257,7 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
                    path + ".name");
   b.slides.push_back({path, outline, phase});
   SlideReport rep;
+  rep.key = path;
   rep.name = name;
   rep.model = std::string(rheology_model_names.name(model));
   rep.phase = static_cast<std::uint8_t>(phase);
@@ -265,6 +267,37 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
   if (d.norm() == 0.0) throw SceneError(path + ".front_direction", "must not be zero");
   rep.front_direction = d.normalized();
   b.scene->slides.push_back(rep);
+}
+
+// Whether the slide's own weight can yield it at rest anywhere: the largest shear stress a body at rest under its
+// buoyant weight makes is below rho' g H, H its height along gravity (on an infinite slope of angle theta the base
+// carries rho' g h sin(theta), h <= H; a free vertical side of a purely cohesive material stands up to H = 3.83 c /
+// (rho' g), Taylor's critical height, e.g. Craig's Soil Mechanics 7th ed. 12.2), so a strength at zero normal stress
+// of rho' g H or more holds it rigid at rest on any face. rho' is its density less the water's where the whole slide
+// starts below the still-water level, else its own density (the heavier weight: the warning errs towards silence).
+void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, const Rheology& rheology,
+                           SlideReport& rep) {
+  double strength = 0.0;
+  if (const auto* hb = std::get_if<HerschelBulkley>(&rheology)) strength = hb->yield_stress_pa;
+  else if (const auto* mc = std::get_if<MohrCoulomb>(&rheology)) strength = mc->cohesion_pa;
+  const double g = b.sim->options.gravity.norm();
+  if (!(strength > 0.0) || g == 0.0) return;
+  const Vec<2> down = b.sim->options.gravity / g;
+  double top = std::numeric_limits<double>::infinity(), bottom = -top, highest_y = -top;
+  for (const auto& v : slide.outline) {
+    const double depth = from_rigid(v).dot(down);
+    top = std::min(top, depth), bottom = std::max(bottom, depth), highest_y = std::max(highest_y, from_rigid(v)[1]);
+  }
+  const double height = bottom - top;
+  const bool submerged = std::isfinite(b.still_level) && highest_y < b.still_level;
+  const double weight_density = std::abs(rep.density - (submerged ? b.phases.phases[0].density : 0.0));
+  const double buoyant_weight = weight_density * g * height;  // Pa
+  if (strength < buoyant_weight) return;
+  rep.rigid_at_rest_warning = fmt::format(
+      "{}: its strength at rest ({:.4g} Pa) is {:.3g} times its buoyant weight per area over its {:.3g} m height "
+      "({:.4g} Pa), so its own weight yields it nowhere: it stays rigid until the water loads it; {}.model: rigid "
+      "models such a slide at less cost",
+      rep.key, strength, strength / buoyant_weight, height, buoyant_weight, rep.key);
 }
 
 // The yield criterion at rest, an infinite-slope estimate: the slide rests on the wall face its outline lies along
@@ -291,6 +324,7 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
     if (steep > steepest) steepest = steep, tangent = t, normal = f.inward;
   }
   const Rheology rheology = b.phases.phases[slide.phase].rheology;
+  warn_if_rigid_at_rest(b, slide, rheology, rep);
   if (steepest < 0.0 || g == 0.0) {
     rep.criterion = "rests on no wall face: no yield criterion at rest";
     return;

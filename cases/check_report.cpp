@@ -123,6 +123,8 @@ std::string phases_and_slides(const Scene& scene) {
     out += fmt::format("slide {:<9} deformable ({}), {} particles, area {:.6g} m^2, mass {:.6g} kg/m (particles {:.6g})\n"
                        "  at rest         {}\n",
                        s.name, s.model, s.particles, s.area, s.density * s.area, s.mass_particles, s.criterion);
+  for (const auto& s : scene.slides)
+    if (!s.rigid_at_rest_warning.empty()) out += "warning: " + s.rigid_at_rest_warning + "\n";
   return out;
 }
 

@@ -74,6 +74,12 @@ struct SlideReport {
   double basal_shear_stress = 0.0;  // Pa
   double strength = 0.0;            // Pa: yield stress, or friction x normal stress
   std::string criterion;            // one line for slide check
+  // Set when the material's strength at zero normal stress (yield stress, cohesion) is at least its buoyant weight
+  // per area over its height, rho' g H: then no stress its own weight makes at rest yields it, on any face or free
+  // side, and it stays rigid until the water loads it (cases/build_bodies.cpp). slide check warns: model: rigid is
+  // the cheaper model of such a slide.
+  std::string rigid_at_rest_warning;
+  std::string key;                  // bodies[k]
 };
 
 struct Scene {

@@ -66,6 +66,20 @@ TEST(SedimentBlock, WithEnoughYieldStressStaysPut) {
   EXPECT_LT(most, 0.5 * dp);
 }
 
+// slide check warns that a slide its own weight cannot yield is cheaper as a rigid body: tau_y at or above
+// rho' g H (932 Pa here), and only then.
+TEST(SedimentBlock, CheckWarnsWhenTheYieldStressKeepsTheSlideRigidAtRest) {
+  const auto dir = fresh_directory("block_rigid_at_rest");
+  for (const double tau_y : {3000.0, 932.0, 900.0}) {
+    write_file(dir / "s.yaml", block_on_floor(tau_y, 1.0));
+    const CommandResult r = run_command(slide_binary() + " check " + (dir / "s.yaml").string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    const bool warned = r.output.find("warning: bodies[0]: its strength at rest") != std::string::npos;
+    EXPECT_EQ(warned, tau_y >= 932.0) << tau_y << " Pa: " << r.output;
+    if (warned) EXPECT_NE(r.output.find("bodies[0].model: rigid"), std::string::npos) << r.output;
+  }
+}
+
 // The same block without a yield stress, a viscous fluid of 0.1 Pa s twice as dense as the water: it slumps, its
 // thickness (the largest column thickness, 2 dp columns as slide_front.csv) drops and its front moves out.
 TEST(SedimentBlock, WithoutYieldStressSlumps) {

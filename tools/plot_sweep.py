@@ -142,7 +142,8 @@ def plot_stability_map(rows, plan, target):
                 if worst["outcome"] == "unstable" and worst["failure_time"]:
                     note += f"\nt={number(worst['failure_time']):.3g} s"
                 elif worst["outcome"] == "invalid" and worst["note"]:
-                    note += "\n" + worst["note"].split(":")[0]  # the key the run was refused on
+                    # The key the run was refused on, broken at its dots to fit the cell.
+                    note += "\n" + worst["note"].split(":")[0].replace(".", ".\n")
                 elif math.isfinite(number(worst["error"])):
                     note += f"\n{number(worst['error']):.3g}"
                 ax.text(i, j, note, ha="center", va="center", fontsize=7)
