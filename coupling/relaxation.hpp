@@ -10,6 +10,7 @@
 // lattice (fluid/lattice.hpp), a stable packing, settling only compresses the water under its weight.
 // Bodies are left out while settling: their boundary particles stay where they are, like walls.
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "coupling/simulation.hpp"
@@ -26,8 +27,12 @@ struct Relaxation {
   std::vector<double> largest_shift_by_phase;  // m, the same for each phase (index: Particles::phase)
 };
 
+// How the error of a settling that went unstable begins: "settling went unstable at t = T s: REASON" (T counted from
+// the start of settling). The sweep's results read it back (tools/sweep/sweep_results.cpp).
+inline constexpr std::string_view settling_instability_prefix = "settling went unstable at t = ";
+
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
-// settling goes unstable. On return the simulation is at time 0 with every fluid velocity zero.
+// settling goes unstable (its message: settling_instability_prefix above). On return the simulation is at time 0 with every fluid velocity zero.
 // held_phases: fluid particles of these phases (deformable slides) are held where they are while the water settles
 // around them, as a rigid slide is (their pressure still settles: they are put back after every step). Sediment
 // that is not held settles as a fluid (Simulation::set_rheology_suspended): its rheology starts at t = 0.

@@ -181,6 +181,29 @@ combinations:
   EXPECT_NE(t.rows[1][t.column("note")].find("method.wall_pressure"), std::string::npos) << t.rows[1][t.column("note")];
 }
 
+// Still water that goes unstable while it settles (the difference gradient behind the gated dam break's gate, at
+// a/10: n/n0 passes 1.5 at 0.165 s of settling) is `unstable` with the settling time and the check, not `invalid`:
+// the method fails on this scene.
+TEST(Sweep, AMethodThatGoesUnstableWhileSettlingIsUnstable) {
+  const fs::path dir = fresh_directory("sweep_settling");
+  write_file(dir / "s.yaml", fmt::format(R"(scene: {}
+set: {{particle_spacing: 0.011430, end_time: 0.001, output.snapshots: false}}
+vary:
+  method.gradient: [difference]
+)",
+                                         (source_dir() / "cases/dam_break_gated_2d.yaml").string()));
+  const CommandResult r = run_command(slide_binary() + " sweep " + (dir / "s.yaml").string() + " --out " +
+                                      (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CsvTable t = read_csv(dir / "out/results.csv");
+  ASSERT_EQ(t.rows.size(), 1u);
+  const auto& row = t.rows[0];
+  EXPECT_EQ(row[t.column("outcome")], "unstable");
+  EXPECT_NEAR(std::stod(row[t.column("failure_time")]), 0.165098, 1e-6);
+  EXPECT_NE(row[t.column("failure_check")].find("number-density collapse"), std::string::npos);
+  EXPECT_NE(row[t.column("note")].find("while settling"), std::string::npos);
+}
+
 // A run folder made with other settings (the sweep file was edited since) is not taken as finished: it runs again.
 TEST(Sweep, AnEditedSweepRunsAgainWhatChanged) {
   const fs::path dir = fresh_directory("sweep_edited");

@@ -7,7 +7,8 @@
   stability_map.png   the outcome of every run over two varied keys (the sweep's plots.map.x and .y, else the first
                       two), one panel per value of a third (plots.map.panels, else the third varied key): completed,
                       inaccurate, unstable (with the time it failed), invalid (with the key it was refused on),
-                      interrupted, missing.
+                      interrupted, missing; the worst where several runs share a cell, refused (invalid) ones only
+                      where no other run of the cell ran.
 Usage: tools/plot_sweep.py SWEEP_DIR. Uses Debian's python3-matplotlib through /usr/bin/python3."""
 import csv
 import json
@@ -134,13 +135,17 @@ def plot_stability_map(rows, plan, target):
             for j, yv in enumerate(ys):
                 cell = [r for r in rows if r[x_key] == xv and (y_key is None or r[y_key] == yv)
                         and (panel_key is None or r[panel_key] == panel)]
+                # A refused combination (invalid) did not run: it is shown only where nothing else in the cell ran.
+                ran = [r for r in cell if r["outcome"] != "invalid"]
+                cell = ran or cell
                 if not cell:
                     continue
                 worst = max(cell, key=lambda r: SEVERITY.index(r["outcome"]) if r["outcome"] in SEVERITY else 0)
                 ax.add_patch(plt.Rectangle((i - 0.45, j - 0.45), 0.9, 0.9, color=COLOURS.get(worst["outcome"], "w")))
                 note = worst["outcome"]
                 if worst["outcome"] == "unstable" and worst["failure_time"]:
-                    note += f"\nt={number(worst['failure_time']):.3g} s"
+                    settling = worst["note"].startswith("while settling")
+                    note += f"\n{'settling ' if settling else ''}t={number(worst['failure_time']):.3g} s"
                 elif worst["outcome"] == "invalid" and worst["note"]:
                     # The key the run was refused on, broken at its dots to fit the cell.
                     note += "\n" + worst["note"].split(":")[0].replace(".", ".\n")
@@ -156,7 +161,8 @@ def plot_stability_map(rows, plan, target):
             ax.set_ylabel(y_key)
         if panel_key:
             ax.set_title(f"{panel_key} = {panel}", fontsize=9)
-    fig.suptitle(f"sweep {plan['sweep']}: outcome of each run (worst where several share a cell)", fontsize=10)
+    fig.suptitle(f"sweep {plan['sweep']}: outcome of each run\n(the worst of a cell's runs; "
+                 "a refused combination only where no other ran)", fontsize=10)
     fig.tight_layout()
     fig.savefig(target, dpi=110)
     plt.close(fig)

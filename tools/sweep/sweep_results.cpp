@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cases/csv_table.hpp"
+#include "coupling/relaxation.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/measures/dam_break_front.hpp"
 
@@ -85,6 +86,24 @@ bool run_is_finished(const std::filesystem::path& run_folder, const SweepRun& ru
   return status == "completed" || status == "unstable";
 }
 
+namespace {
+
+// A run refused because its still water went unstable while it settled is unstable (the method fails on this
+// scene), not invalid: its failure time is the settling time it failed at, its check the reason, and its note says
+// "while settling".
+void classify_settling_instability(RunResult& r) {
+  const auto at = r.note.find(settling_instability_prefix);
+  if (at == std::string::npos) return;
+  const std::string rest = r.note.substr(at + settling_instability_prefix.size());
+  const auto reason = rest.find(" s: ");
+  r.outcome = RunOutcome::unstable;
+  r.failure_time = std::strtod(rest.c_str(), nullptr);
+  r.failure_check = reason == std::string::npos ? std::string() : rest.substr(reason + 4);
+  r.note = "while settling (t counted from the start of settling)";
+}
+
+}  // namespace
+
 RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem::path& dir,
                       const WaveSignature* finest) {
   RunResult r;
@@ -101,6 +120,7 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
       const std::string prefix = "slide: invalid scene " + s.scene.string() + ": ";
       if (line.rfind(prefix, 0) == 0) line = line.substr(prefix.size());
       r.note = line;
+      classify_settling_instability(r);
     } else if (!exit_code.empty() && exit_code != "0" && exit_code != "3" && exit_code != "130") {
       r.outcome = RunOutcome::failed;
       r.note = "exit " + exit_code + ": " + last_line(read_text(dir / "logs" / (run.name + ".log")));

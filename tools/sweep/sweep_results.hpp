@@ -12,7 +12,8 @@
 namespace slide::tools {
 
 // completed: ran to its end time (and, with a threshold, its error is within it); inaccurate: completed with an error
-// above the sweep's threshold; unstable: stopped by an instability check (exit 3); invalid: its scene was refused
+// above the sweep's threshold; unstable: stopped by an instability check (exit 3), or its still water went unstable
+// while it settled (exit 2 on method.initial_state; note "while settling"); invalid: its scene was refused
 // (exit 2: a combination the method does not allow, as the mirror wall model on the hexagonal lattice); interrupted:
 // stopped by a signal or still running; failed: exited otherwise (a crash, killed: its exit code in the note);
 // missing: no run.json of this run's settings (not run yet, not copied back, or made by an earlier version of the
