@@ -1,5 +1,5 @@
-// Step: what a run writes besides the particles' state: wave gauges, the dam-break surge front, free-surface
-// profiles, and the output intervals.
+// Step: what a run writes besides the particles' state: wave gauges, the dam-break surge front, the velocity
+// profile, free-surface profiles, and the output intervals.
 #include <algorithm>
 
 #include "cases/scene_build.hpp"
@@ -17,6 +17,12 @@ std::vector<GaugeSpec> read_gauges(const YAML::Node& list) {
 SurgeFrontSpec read_surge_front(const YAML::Node& sf) {
   return {sf["enabled"].as<bool>(), sf["wall_face_x"].as<double>(), sf["floor_y"].as<double>(),
           sf["column_width"].as<double>()};
+}
+
+// diagnostics.velocity_profile: bin 0 = dp.
+VelocityProfileSpec read_velocity_profile(const YAML::Node& vp, double dp) {
+  const double bin = vp["bin"].as<double>();  // >= 0 by the schema
+  return {vp["enabled"].as<bool>(), vp["y_origin"].as<double>(), bin > 0.0 ? bin : dp};
 }
 
 // profiles: times in increasing order, x_max > x_min when there are times, spacing 0 = dp.
@@ -43,6 +49,7 @@ void read_outputs(SceneBuild& b) {
   Scene& scene = *b.scene;
   scene.gauges = read_gauges(b.r["gauges"]);
   scene.surge_front = read_surge_front(b.r["diagnostics"]["surge_front"]);
+  scene.velocity_profile = read_velocity_profile(b.r["diagnostics"]["velocity_profile"], b.dp);
   scene.profiles = read_profiles(b.r["profiles"], b.dp);
   scene.output = read_output(b.r["output"]);
   for (const auto& t : b.r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());

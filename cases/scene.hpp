@@ -29,6 +29,14 @@ struct SurgeFrontSpec {
   double column_width = 0.0;  // a, for the dimensionless columns
 };
 
+// velocity_profile.csv (coupling/velocity_profile.hpp): the fluid's mean velocity in bins of height `bin` from
+// y_origin, sampled with the gauges.
+struct VelocityProfileSpec {
+  bool enabled = false;
+  double y_origin = 0.0;  // m
+  double bin = 0.0;       // m
+};
+
 struct ProfileSpec {
   std::vector<double> times;  // s, increasing
   double x_min = 0.0, x_max = 0.0, spacing = 0.0;
@@ -89,6 +97,7 @@ struct Scene {
   std::unique_ptr<Simulation<2>> simulation;
   std::vector<GaugeSpec> gauges;
   SurgeFrontSpec surge_front;
+  VelocityProfileSpec velocity_profile;
   ProfileSpec profiles;
   OutputSpec output;
   double deepest_water = 0.0;      // m, nominal

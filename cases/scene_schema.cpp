@@ -229,7 +229,7 @@ Schema output_schema() {
       {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
        {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, inf)},
        {"gauge_interval", S::number("time between gauge and diagnostic samples (gauges.csv, surge_front.csv, "
-                                    "slide_front.csv)", "s", 0.005, 0.0, inf, true, false)},
+                                    "slide_front.csv, velocity_profile.csv)", "s", 0.005, 0.0, inf, true, false)},
        {"slide_outline_times", S::vector("times of the deformable slides' upper surfaces in slide_outline.csv, each "
                                          "taken at the first step at or after it", "s", -1, std::vector<double>{}, 0.0)},
        {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)}},
@@ -263,6 +263,17 @@ Schema surge_schema() {
        {"floor_y", S::number("y of the floor face", "m", 0.0)},
        {"column_width",
         S::number("initial column width a for Z = front / a and T = t sqrt(2 g / a); 0 = omit", "m", 0.0, 0.0, inf)}},
+      false);
+}
+
+Schema velocity_profile_schema() {
+  return S::map(
+      "the fluid's mean velocity across the flow (velocity_profile.csv: time,y,u,v,particles), in bins of height bin "
+      "from y_origin, sampled with the gauges; for a channel periodic in x, the mean over the period "
+      "(coupling/velocity_profile.hpp)",
+      {{"enabled", S::boolean("write velocity_profile.csv", false)},
+       {"y_origin", S::number("y of one bin edge", "m", 0.0)},
+       {"bin", S::number("bin height; 0 = dp", "m", 0.0, 0.0, inf)}},
       false);
 }
 
@@ -308,7 +319,9 @@ Schema make_schema() {
        {"output", output_schema()},
        {"gauges", S::list("wave gauges", gauge_schema())},
        {"profiles", profiles_schema()},
-       {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge_schema()}}, false)}});
+       {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge_schema()},
+                                                              {"velocity_profile", velocity_profile_schema()}},
+                               false)}});
 }
 
 }  // namespace

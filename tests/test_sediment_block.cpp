@@ -76,7 +76,9 @@ TEST(SedimentBlock, CheckWarnsWhenTheYieldStressKeepsTheSlideRigidAtRest) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     const bool warned = r.output.find("warning: bodies[0]: its strength at rest") != std::string::npos;
     EXPECT_EQ(warned, tau_y >= 932.0) << tau_y << " Pa: " << r.output;
-    if (warned) EXPECT_NE(r.output.find("bodies[0].model: rigid"), std::string::npos) << r.output;
+    if (warned) {
+      EXPECT_NE(r.output.find("bodies[0].model: rigid"), std::string::npos) << r.output;
+    }
   }
 }
 

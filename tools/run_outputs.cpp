@@ -6,6 +6,7 @@
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/slide_front.hpp"
 #include "coupling/surge_front.hpp"
+#include "coupling/velocity_profile.hpp"
 
 namespace slide::tools {
 
@@ -60,6 +61,9 @@ RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& o
   if (scene.surge_front.enabled)
     front_.emplace(out / "surge_front.csv",
                    std::vector<std::string>{"time", "front", "wall_height", "T", "Z", "H_over_2a"});
+  if (scene.velocity_profile.enabled)
+    velocity_profile_.emplace(out / "velocity_profile.csv",
+                              std::vector<std::string>{"time", "y", "u", "v", "particles"});
   if (!scene.profiles.times.empty())
     profiles_.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
   if (!scene.slides.empty()) {
@@ -78,7 +82,7 @@ void RunOutputs::write_snapshot(const Particles<2>& P, double time, long step) {
   if (snapshots_) snapshots_->write(time, step, IdOrdered(P).fields());
 }
 
-// Gauges and the surge front.
+// Gauges, the surge front and the velocity profile.
 void RunOutputs::sample() {
   sample_slides();
   if (gauges_) {
@@ -93,6 +97,11 @@ void RunOutputs::sample() {
     const double T = a > 0 ? sim_.time() * std::sqrt(2.0 * g / a) : NAN;
     front_->add_row({sim_.time(), f.front, f.wall_height, T, a > 0 ? f.front / a : NAN,
                      a > 0 ? f.wall_height / (2 * a) : NAN});
+  }
+  if (velocity_profile_) {
+    const auto& vp = scene_.velocity_profile;
+    for (const auto& r : velocity_profile<2>(sim_, vp.y_origin, vp.bin))
+      velocity_profile_->add_row({sim_.time(), r.y, r.u, r.v, double(r.particles)});
   }
 }
 
@@ -158,6 +167,7 @@ void RunOutputs::flush() {
   if (bodies_) bodies_->flush();
   if (gauges_) gauges_->flush();
   if (front_) front_->flush();
+  if (velocity_profile_) velocity_profile_->flush();
 }
 
 void RunOutputs::write_initial() {

@@ -48,7 +48,7 @@ class RunOutputs : public StepObserver<2> {
   const cases::Scene& scene_;
   const Simulation<2>& sim_;
   std::optional<SnapshotWriter> snapshots_;
-  std::optional<CsvWriter> gauges_, front_, bodies_, profiles_, slide_front_, slide_outline_;
+  std::optional<CsvWriter> gauges_, front_, velocity_profile_, bodies_, profiles_, slide_front_, slide_outline_;
   std::size_t next_profile_ = 0, next_outline_ = 0;
   double eps_ = 0.0;
   double next_snapshot_ = std::numeric_limits<double>::infinity();

@@ -103,8 +103,8 @@ ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
   if (!e.IsMap()) throw SceneError("error", "must be a map (measure, reference, threshold)");
   for (const auto& kv : e) {
     const std::string k = kv.first.as<std::string>();
-    if (k != "measure" && k != "reference" && k != "threshold" && k != "T_max")
-      throw SceneError("error." + k, "unknown key (known: measure, reference, threshold, T_max)");
+    if (k != "measure" && k != "reference" && k != "threshold" && k != "T_max" && k != "from_time")
+      throw SceneError("error." + k, "unknown key (known: measure, reference, threshold, T_max, from_time)");
   }
   const std::string name = e["measure"] ? text(e["measure"], "error.measure") : "none";
   const auto measure = error_measure_names.find(name);
@@ -115,9 +115,12 @@ ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
   try {
     if (e["threshold"]) spec.threshold = e["threshold"].as<double>();
     if (e["T_max"]) spec.T_max = e["T_max"].as<double>();
+    if (e["from_time"]) spec.from_time = e["from_time"].as<double>();
   } catch (const YAML::Exception&) {
-    throw SceneError("error", "threshold and T_max must be numbers");
+    throw SceneError("error", "threshold, T_max and from_time must be numbers");
   }
+  if (!(spec.from_time >= 0.0) || !std::isfinite(spec.from_time))
+    throw SceneError("error.from_time", "must be zero or positive");
   if (!(spec.threshold > 0.0)) throw SceneError("error.threshold", "must be positive");
   if (!(spec.T_max > 0.0) || !std::isfinite(spec.T_max)) throw SceneError("error.T_max", "must be positive");
   if (spec.measure == ErrorMeasure::dam_break_front) {

@@ -12,6 +12,8 @@
 //     measure: dam_break_front         # one of error_measure_names (tools/sweep/error_spec.hpp)
 //     reference: ../reference/martin_moyce_1952_surge_front.csv   # relative to the sweep file
 //     threshold: 0.10                  # a completed run whose error exceeds it is `inaccurate`
+//     T_max: 3                         # dam_break_front: compared over 0 < T <= T_max (default 3)
+//     from_time: 0.5                   # floating_draft: the draft's time mean starts here, s (default 0)
 //   plots:                             # what tools/plot_sweep.py draws (optional)
 //     resolution_key: particle_spacing # the chart's series are the other varied keys
 //     map: {x: particle_spacing, y: method.gradient, panels: method.wall_pressure}   # default: the first three

@@ -12,6 +12,8 @@
 #include "coupling/relaxation.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/measures/dam_break_front.hpp"
+#include "tools/measures/floating_draft.hpp"
+#include "tools/measures/poiseuille_profile.hpp"
 
 namespace slide::tools {
 namespace {
@@ -44,6 +46,12 @@ void measure_error(const Sweep& s, const std::filesystem::path& run_folder, cons
       case ErrorMeasure::finest_run:
         if (!finest) throw std::runtime_error("no finest run completed");
         r.error = wave_signature_error(wave_signature(run_folder), *finest);
+        return;
+      case ErrorMeasure::floating_draft:
+        r.error = floating_draft(run_folder, s.error.from_time).relative_error;
+        return;
+      case ErrorMeasure::poiseuille_profile:
+        r.error = poiseuille_profile_error(run_folder).rms;
         return;
       case ErrorMeasure::dam_break_front:
         r.error = dam_break_front_error(read_csv(run_folder / "surge_front.csv"), read_csv(s.error.reference),
