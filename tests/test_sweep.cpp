@@ -74,6 +74,22 @@ TEST(SweepFile, ABadValueIsRefusedNamingTheKeyAndTheRun) {
   EXPECT_THROW(tools::load_sweep(dir / "t.yaml"), cases::SceneError);
 }
 
+// The stability map's panels: a varied key, or none (one panel); anything else is refused naming the key.
+TEST(SweepFile, MapPanelsAreAVariedKeyOrNone) {
+  const fs::path dir = fresh_directory("sweep_panels");
+  const std::string base = fmt::format("scene: {}\nvary: {{particle_spacing: [0.01, 0.02], method.gradient: [pmin]}}\n",
+                                       dam_break_scene());
+  write_file(dir / "s.yaml", base + "plots: {map: {x: particle_spacing, y: method.gradient, panels: none}}\n");
+  EXPECT_EQ(tools::load_sweep(dir / "s.yaml").plots.map_panels, "none");
+  write_file(dir / "t.yaml", base + "plots: {map: {panels: lattice}}\n");
+  try {
+    tools::load_sweep(dir / "t.yaml");
+    FAIL() << "no error";
+  } catch (const cases::SceneError& e) {
+    EXPECT_EQ(e.key_path, "plots.map.panels");
+  }
+}
+
 // Four runs of the dam break at a/5 and a/10 (about a second each): the symmetric gradient completes, the standard
 // one (seed eq. 3) goes unstable; with a threshold of 8 % the a/5 run (front error 8.9 %) is `inaccurate`, the a/10
 // run (7.5 %) `completed` (measured at stop 20).

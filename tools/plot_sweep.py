@@ -99,8 +99,12 @@ def plot_accuracy_cost(rows, plan, target):
     threshold = plan["error"].get("threshold")
     if threshold is not None:
         ax.axhline(threshold, color="#f0a030", ls="--", lw=1, label=f"threshold {threshold:g}")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
+    if points:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    else:  # no run has an error (every one unstable, refused or missing): an empty chart that says so
+        ax.text(0.5, 0.5, "no run completed with an error: see stability_map.png and results.csv",
+                transform=ax.transAxes, ha="center", va="center")
     ax.set_xlabel("time to answer: setup + loop wall seconds")
     ax.set_ylabel(f"error ({plan['error']['measure']})")
     ax.set_title(f"sweep {plan['sweep']}: accuracy against cost")
@@ -125,6 +129,8 @@ def plot_stability_map(rows, plan, target):
     x_key = spec.get("map_x") or keys[0]
     y_key = spec.get("map_y") or (keys[1] if len(keys) > 1 else None)
     panel_key = spec.get("map_panels") or next((k for k in keys if k not in (x_key, y_key)), None)
+    if panel_key == "none":  # one panel: the other keys follow the map's two (plots.map.panels: none)
+        panel_key = None
     panels = ordered_values(rows, panel_key) if panel_key else [None]
     xs = ordered_values(rows, x_key)
     ys = ordered_values(rows, y_key) if y_key else [""]

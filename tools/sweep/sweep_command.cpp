@@ -79,7 +79,18 @@ class InterruptHandlers {
   struct sigaction previous_int_ {}, previous_term_ {};
 };
 
-// Runs the pending runs, `jobs` at a time. Returns the exit code (0, 1 or 130).
+using RunningRuns = std::map<pid_t, std::pair<const SweepRun*, Clock::time_point>>;
+
+// Asks the running runs to stop as Ctrl-C stops them, and waits for them: nothing is left running behind an error.
+void stop_and_wait(const RunningRuns& running) {
+  for (const auto& [pid, run] : running) kill(pid, SIGINT);
+  for (const auto& [pid, run] : running)
+    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+}
+
+// Runs the pending runs, `jobs` at a time. Returns the exit code (0, 1 or 130). A run that cannot be started (or its
+// folder cleared) stops the running ones before the error goes up.
 int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int threads) {
   std::vector<const SweepRun*> pending;
   for (const auto& r : s.runs)
@@ -87,7 +98,7 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
   std::cerr << fmt::format("slide sweep {}: {} runs, {} finished already, {} to run ({} at once, {} threads each)\n",
                            s.name, s.runs.size(), s.runs.size() - pending.size(), pending.size(), jobs, threads);
   const auto program = this_program();
-  std::map<pid_t, std::pair<const SweepRun*, Clock::time_point>> running;
+  RunningRuns running;
   std::size_t next = 0, done = 0;
   int code = 0;
   const InterruptHandlers handlers;
@@ -101,9 +112,14 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
     }
     while (!interrupted && next < pending.size() && running.size() < std::size_t(jobs)) {
       const SweepRun& r = *pending[next++];
-      std::filesystem::remove_all(run_folder(dir, r));  // what an unfinished attempt left
-      std::filesystem::remove(dir / "logs" / (r.name + ".exit"));
-      running[spawn_run(program, s, r, dir, threads)] = {&r, Clock::now()};
+      try {
+        std::filesystem::remove_all(run_folder(dir, r));  // what an unfinished attempt left
+        std::filesystem::remove(dir / "logs" / (r.name + ".exit"));
+        running[spawn_run(program, s, r, dir, threads)] = {&r, Clock::now()};
+      } catch (...) {
+        stop_and_wait(running);
+        throw;
+      }
     }
     int status = 0;
     const pid_t pid = waitpid(-1, &status, 0);
@@ -167,7 +183,9 @@ int sweep_command(const SweepArguments& args) {
     collect(s, dir);
     return code;
   } catch (const cases::SceneError& e) {
-    std::cerr << "slide: invalid sweep: " << e.what() << "\n";
+    std::cerr << "slide: invalid sweep "
+              << (args.collect.empty() ? args.sweep_file.string() : (args.collect / "plan.json").string()) << ": "
+              << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "slide: error: " << e.what() << "\n";

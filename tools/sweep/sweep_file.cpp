@@ -152,7 +152,9 @@ PlotSpec read_plots(const YAML::Node& p, const std::vector<std::string>& varied)
         const std::string axis = m.first.as<std::string>();
         if (axis == "x") spec.map_x = varied_key(m.second, "plots.map.x");
         else if (axis == "y") spec.map_y = varied_key(m.second, "plots.map.y");
-        else if (axis == "panels") spec.map_panels = varied_key(m.second, "plots.map.panels");
+        else if (axis == "panels")
+          spec.map_panels = text(m.second, "plots.map.panels") == "none" ? "none"
+                                                                          : varied_key(m.second, "plots.map.panels");
         else throw SceneError("plots.map." + axis, "unknown key (known: x, y, panels)");
       }
     } else {

@@ -16,7 +16,8 @@
 //     from_time: 0.5                   # floating_draft: the draft's time mean starts here, s (default 0)
 //   plots:                             # what tools/plot_sweep.py draws (optional)
 //     resolution_key: particle_spacing # the chart's series are the other varied keys
-//     map: {x: particle_spacing, y: method.gradient, panels: method.wall_pressure}   # default: the first three
+//     map: {x: particle_spacing, y: method.gradient, panels: method.wall_pressure}   # default: the first three;
+//                                      # panels: none draws one panel (a third key that follows the other two)
 //
 // Keys are scene key paths as `--set` takes them; values are YAML (a number, a name, a list). Every run's scene is
 // checked against the schema before anything runs: a bad sweep file, key or value is a SceneError (exit 2) naming the
