@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "cases/csv_table.hpp"
 #include "tests/cli_helpers.hpp"
 
 namespace slide::testing {
@@ -266,6 +267,23 @@ TEST(Cli, OneAndTwoThreadsGiveIdenticalFiles) {
       EXPECT_FALSE(a.empty()) << f;
       EXPECT_TRUE(a == b) << f << " differs between 1 and 2 threads, surface pressure " << surface;
     }
+  }
+}
+
+// A run whose end time falls on the sample schedule samples it once: every time in gauges.csv and each body's rows
+// of bodies.csv comes once, in increasing order, and the last is the end time.
+TEST(Cli, TheEndTimeIsSampledOnce) {
+  const fs::path out = fresh_directory("sampled_once");
+  const CommandResult r = run_command(
+      slide_binary() + " run " + (source_dir() / "cases/floating_block_2d.yaml").string() + " --out " + out.string() +
+      " --quiet --set particle_spacing=0.02 --set method.settling_time=0.05 --set end_time=0.02" +
+      " --set output.snapshots=false --set output.gauge_interval=0.01 --set output.body_interval=0.01");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string file : {"gauges.csv", "bodies.csv"}) {
+    const auto times = read_csv(out / file).numbers("time");
+    ASSERT_GE(times.size(), 3u) << file;
+    for (std::size_t k = 1; k < times.size(); ++k) EXPECT_LT(times[k - 1], times[k]) << file << " row " << k;
+    EXPECT_NEAR(times.back(), 0.02, 1e-12) << file;
   }
 }
 

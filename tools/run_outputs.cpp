@@ -84,6 +84,7 @@ void RunOutputs::write_snapshot(const Particles<2>& P, double time, long step) {
 
 // Gauges, the surge front and the velocity profile.
 void RunOutputs::sample() {
+  last_sample_time_ = sim_.time();
   sample_slides();
   if (gauges_) {
     std::vector<double> row{sim_.time()};
@@ -109,6 +110,7 @@ void RunOutputs::sample() {
 void RunOutputs::sample_bodies() {
   const auto& bodies = sim_.bodies();
   if (!bodies) return;
+  last_body_sample_time_ = sim_.time();
   const auto mean = bodies->take_mean_forces();
   for (std::size_t b = 0; b < bodies->size(); ++b) {
     const auto s = bodies->state(int(b));
@@ -203,8 +205,8 @@ void RunOutputs::write_final() {
   const double t = sim_.time();
   if (snapshots_ && (snapshots_->count() == 0 || interval <= 0 || t > next_snapshot_ - interval + eps_))
     write_snapshot(sim_.particles, t, sim_.step_count());
-  sample();
-  if (bodies_ && t > next_body_sample_ - scene_.body_sample_interval + eps_) sample_bodies();
+  if (t > last_sample_time_ + eps_) sample();
+  if (bodies_ && t > last_body_sample_time_ + eps_) sample_bodies();
   flush();
 }
 

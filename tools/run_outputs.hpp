@@ -54,6 +54,9 @@ class RunOutputs : public StepObserver<2> {
   double next_snapshot_ = std::numeric_limits<double>::infinity();
   double next_sample_ = 0.0;
   double next_body_sample_ = 0.0;
+  // When the last samples were taken: the end of a run adds its own only where the last step did not take them.
+  double last_sample_time_ = -std::numeric_limits<double>::infinity();
+  double last_body_sample_time_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace slide::tools
