@@ -269,12 +269,18 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
   b.scene->slides.push_back(rep);
 }
 
-// Whether the slide's own weight can yield it at rest anywhere: the largest shear stress a body at rest under its
-// buoyant weight makes is below rho' g H, H its height along gravity (on an infinite slope of angle theta the base
-// carries rho' g h sin(theta), h <= H; a free vertical side of a purely cohesive material stands up to H = 3.83 c /
-// (rho' g), Taylor's critical height, e.g. Craig's Soil Mechanics 7th ed. 12.2), so a strength at zero normal stress
-// of rho' g H or more holds it rigid at rest on any face. rho' is its density less the water's where the whole slide
-// starts below the still-water level, else its own density (the heavier weight: the warning errs towards silence).
+// The density its weight acts with at rest: less the water's where its centroid starts below the still-water level.
+double weight_density(const SceneBuild& b, const SceneBuild::Slide& slide, double density) {
+  const bool below = std::isfinite(b.still_level) && rigid::centroid(slide.outline)[1] < b.still_level;
+  return density - (below ? b.phases.phases[0].density : 0.0);
+}
+
+// Whether the slide's own weight can yield it at rest anywhere: in a block or layer at rest under its buoyant
+// weight the shear stress stays below rho' g H, H its height along gravity (on an infinite slope of angle theta the
+// base carries rho' g h sin(theta), h <= H; a free vertical side of a purely cohesive material stands up to
+// H = 3.83 c / (rho' g), the critical height of a vertical cut from Taylor's stability number 0.261), so a strength
+// at zero normal stress of rho' g H or more holds it rigid at rest. (Overhangs can carry more; the warning is for the
+// shapes slides have.)
 void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, const Rheology& rheology,
                            SlideReport& rep) {
   double strength = 0.0;
@@ -283,26 +289,27 @@ void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, 
   const double g = b.sim->options.gravity.norm();
   if (!(strength > 0.0) || g == 0.0) return;
   const Vec<2> down = b.sim->options.gravity / g;
-  double top = std::numeric_limits<double>::infinity(), bottom = -top, highest_y = -top;
+  double top = std::numeric_limits<double>::infinity(), bottom = -top;
   for (const auto& v : slide.outline) {
     const double depth = from_rigid(v).dot(down);
-    top = std::min(top, depth), bottom = std::max(bottom, depth), highest_y = std::max(highest_y, from_rigid(v)[1]);
+    top = std::min(top, depth), bottom = std::max(bottom, depth);
   }
   const double height = bottom - top;
-  const bool submerged = std::isfinite(b.still_level) && highest_y < b.still_level;
-  const double weight_density = std::abs(rep.density - (submerged ? b.phases.phases[0].density : 0.0));
-  const double buoyant_weight = weight_density * g * height;  // Pa
+  const double buoyant_weight = std::abs(weight_density(b, slide, rep.density)) * g * height;  // Pa
   if (strength < buoyant_weight) return;
+  const std::string ratio =
+      buoyant_weight > 0.0 ? fmt::format("{:.3g} times", strength / buoyant_weight) : std::string("above");
   rep.rigid_at_rest_warning = fmt::format(
-      "{}: its strength at rest ({:.4g} Pa) is {:.3g} times its buoyant weight per area over its {:.3g} m height "
-      "({:.4g} Pa), so its own weight yields it nowhere: it stays rigid until the water loads it; {}.model: rigid "
-      "models such a slide at less cost",
-      rep.key, strength, strength / buoyant_weight, height, buoyant_weight, rep.key);
+      "{}: its strength at rest ({:.4g} Pa) is {} its buoyant weight per area over its {:.3g} m height ({:.4g} Pa), "
+      "so its own weight yields it nowhere: it stays rigid until the water loads it; {}.model: rigid models such a "
+      "slide at less cost",
+      rep.key, strength, ratio, height, buoyant_weight, rep.key);
 }
 
 // The yield criterion at rest, an infinite-slope estimate: the slide rests on the wall face its outline lies along
-// (the steepest such face, theta its angle to the plane normal to gravity, whichever way gravity points); a layer of its largest thickness normal to that face, of buoyant density (rho_s - rho_w
-// below the still-water level), has the basal shear stress tau = rho' g h sin(theta); it holds tau_y
+// (the steepest such face, theta its angle to the plane normal to gravity, whichever way gravity points); a layer of
+// its largest thickness normal to that face, of buoyant density (rho_s - rho_w below the still-water level:
+// weight_density), has the basal shear stress tau = rho' g h sin(theta); it holds tau_y
 // (Herschel-Bulkley), c + rho' g h cos(theta) tan(phi) (Mohr-Coulomb), mu_s rho' g h cos(theta) (mu(I)), nothing
 // (Newtonian); with a basal friction mu_b the wall holds mu_b rho' g h cos(theta) at its base.
 void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, SlideReport& rep) {
@@ -333,8 +340,7 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
   double h = 0.0;
   const Vec<2> base = from_rigid(slide.outline[0]);
   for (const auto& v : slide.outline) h = std::max(h, std::abs((from_rigid(v) - base).dot(normal)));
-  const double below = std::isfinite(b.still_level) && rigid::centroid(slide.outline)[1] < b.still_level ? 1.0 : 0.0;
-  const double buoyant = rep.density - below * b.phases.phases[0].density;
+  const double buoyant = weight_density(b, slide, rep.density);
   const double theta = rep.slope_angle_deg * M_PI / 180.0;
   rep.basal_shear_stress = buoyant * g * h * std::sin(theta);
   const double normal_stress = buoyant * g * h * std::cos(theta);

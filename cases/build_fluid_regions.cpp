@@ -40,8 +40,7 @@ int body_near(const SceneBuild& b, const Vec<2>& p) {
 // lattice those whose centre lies inside, as for polygons: its walls are cut from the same lattice, so a wall face
 // splits the lattice and the water fills it up to the wall, and a free side loses or gains half a cell on average.
 // (Whole cells on the hexagonal lattice lost up to a cell layer on two sides: 5.5 % of the gated dam break's water.)
-// A side on the low end of a periodic x is the period's [x_min, x_max): a centre on it is inside (its image on
-// x_max is not).
+// A rectangle that spans a periodic domain's period takes the period's points in x (SceneBuild::in_period).
 RegionShape rectangle(const SceneBuild& b, const YAML::Node& rn, const std::string& path) {
   const Vec<2> lo = vec2(rn["min"]), hi = vec2(rn["max"]);
   if (!(lo[0] < hi[0] && lo[1] < hi[1])) throw SceneError(path + ".max", "must exceed min in x and y");
@@ -50,11 +49,11 @@ RegionShape rectangle(const SceneBuild& b, const YAML::Node& rn, const std::stri
   // wall cut from the lattice puts its own particle, does not (e < 0).
   const double half = whole_cells ? 0.5 * b.dp : 0.0;
   const double e = (whole_cells ? 1e-9 : -1e-9) * b.dp;
-  const bool on_period_start = b.period_x && std::abs(lo[0] - b.period_x->x_min) <= 1e-9 * b.dp;
-  const double e_low_x = on_period_start ? std::abs(e) : e;
-  return {lo, hi, [lo, hi, half, e, e_low_x](const Vec<2>& p) {
-            return p[0] - half >= lo[0] - e_low_x && p[0] + half <= hi[0] + e && p[1] - half >= lo[1] - e &&
-                   p[1] + half <= hi[1] + e;
+  const bool spans_period = b.period_x && lo[0] <= b.period_x->x_min + 1e-9 * b.dp &&
+                            hi[0] >= b.period_x->x_max - 1e-9 * b.dp;
+  return {lo, hi, [lo, hi, half, e, spans_period](const Vec<2>& p) {
+            const bool in_x = spans_period || (p[0] - half >= lo[0] - e && p[0] + half <= hi[0] + e);
+            return in_x && p[1] - half >= lo[1] - e && p[1] + half <= hi[1] + e;
           }};
 }
 
@@ -101,13 +100,14 @@ RegionShape region_shape(SceneBuild& b, const YAML::Node& rn, const std::string&
   return below_level(b, rn, path);
 }
 
-// Fills region k with fluid particles of phase `ph`; a lattice point on or near a body is an error.
+// Fills region k with fluid particles of phase `ph` (in a periodic domain, its points in the period:
+// SceneBuild::in_period); a lattice point on or near a body is an error.
 void fill_region(SceneBuild& b, const RegionShape& shape, std::size_t ph, const std::string& path, bool slide_itself) {
   Particles<2>& P = b.particles();
   const auto& phase = b.phases.phases[ph];
   std::size_t added = 0;
   for_each_lattice_point(b.sim->options.lattice, b.dp, shape.lo, shape.hi, [&](const Vec<2>& p) {
-      if (!shape.inside(p)) return;
+      if (!b.in_period(p[0]) || !shape.inside(p)) return;
       if (const int body = body_near(b, p); body >= 0)
         throw SceneError(path, fmt::format("water at ({:.6g}, {:.6g}) lies inside body bodies[{}] or within dp/2 of "
                                            "its outline",

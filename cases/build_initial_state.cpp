@@ -97,7 +97,7 @@ void set_domain(SceneBuild& b) {
       if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
         throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
                                                P.position[i][0], P.position[i][1]));
-  if (b.r["domain"]["periodic_x"].as<bool>()) opt.periodic_x = PeriodicX{opt.domain_lo[0], opt.domain_hi[0]};
+  opt.periodic_x = b.period_x;
 }
 
 void count_particles(SceneBuild& b) {

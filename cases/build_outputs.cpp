@@ -19,10 +19,10 @@ SurgeFrontSpec read_surge_front(const YAML::Node& sf) {
           sf["column_width"].as<double>()};
 }
 
-// diagnostics.velocity_profile: bin 0 = dp.
-VelocityProfileSpec read_velocity_profile(const YAML::Node& vp, double dp) {
+// diagnostics.velocity_profile: bin 0 = the lattice's row spacing (one row of particles a bin).
+VelocityProfileSpec read_velocity_profile(const YAML::Node& vp, LatticeKind lattice, double dp) {
   const double bin = vp["bin"].as<double>();  // >= 0 by the schema
-  return {vp["enabled"].as<bool>(), vp["y_origin"].as<double>(), bin > 0.0 ? bin : dp};
+  return {vp["enabled"].as<bool>(), vp["y_origin"].as<double>(), bin > 0.0 ? bin : row_spacing(lattice, dp)};
 }
 
 // profiles: times in increasing order, x_max > x_min when there are times, spacing 0 = dp.
@@ -49,7 +49,7 @@ void read_outputs(SceneBuild& b) {
   Scene& scene = *b.scene;
   scene.gauges = read_gauges(b.r["gauges"]);
   scene.surge_front = read_surge_front(b.r["diagnostics"]["surge_front"]);
-  scene.velocity_profile = read_velocity_profile(b.r["diagnostics"]["velocity_profile"], b.dp);
+  scene.velocity_profile = read_velocity_profile(b.r["diagnostics"]["velocity_profile"], b.options().lattice, b.dp);
   scene.profiles = read_profiles(b.r["profiles"], b.dp);
   scene.output = read_output(b.r["output"]);
   for (const auto& t : b.r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());

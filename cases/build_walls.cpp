@@ -41,12 +41,12 @@ std::vector<BoundaryPoint> wall_points(const SceneBuild& b, const YAML::Node& wn
   } catch (const std::invalid_argument& e) {
     throw SceneError(fmt::format("walls[{}].points", w), e.what());
   }
-  // Along a periodic x the wall's points are those of one period, [x_min, x_max) (the periodic images supply the
-  // rest), so a wall may run past the period's ends and joins itself across the seam.
-  if (b.period_x) {
-    const double e = 1e-9 * b.dp, x_min = b.period_x->x_min - e, x_max = b.period_x->x_max - e;
-    std::erase_if(pts, [&](const BoundaryPoint& p) { return p.position[0] < x_min || p.position[0] >= x_max; });
-  }
+  // Along a periodic x the wall's points are those of one period (SceneBuild::in_period), so a wall may run past
+  // the period's ends and joins itself across the seam; a wall with no point in the period is an error.
+  std::erase_if(pts, [&](const BoundaryPoint& p) { return !b.in_period(p.position[0]); });
+  if (pts.empty())
+    throw SceneError(fmt::format("walls[{}].points", w), "the wall has no point inside the periodic domain's period "
+                                                         "[domain.min.x, domain.max.x)");
   return pts;
 }
 
@@ -76,7 +76,7 @@ void check_gate(const SceneBuild& b, std::size_t w) {
   if (b.initial_state != InitialState::settled)
     throw SceneError(key, "a gate needs method.initial_state: settled (it holds the water while it settles, and is "
                           "taken away at t = 0)");
-  if (b.r["domain"] && b.r["domain"]["periodic_x"].as<bool>())
+  if (b.period_x)
     throw SceneError(key, "a gate cannot be used with a periodic domain (domain.periodic_x)");
 }
 

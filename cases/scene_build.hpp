@@ -53,6 +53,10 @@ struct SceneBuild {
   InitialState initial_state = default_initial_state;
   // Set by check_period: the period [x_min, x_max) of a domain periodic in x; unset otherwise.
   std::optional<PeriodicX> period_x;
+  // Whether a lattice point at x belongs to the period (always, without one): x in [x_min, x_max) with a margin of a
+  // quarter column either side, so a point on x_min is in and its image on x_max is out however the period's ends
+  // round. Walls and regions keep only these points: along a periodic x, the periodic images supply the rest.
+  bool in_period(double x) const;
   // Set by read_phases.
   ScenePhases phases;
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.

@@ -268,12 +268,13 @@ Schema surge_schema() {
 
 Schema velocity_profile_schema() {
   return S::map(
-      "the fluid's mean velocity across the flow (velocity_profile.csv: time,y,u,v,particles), in bins of height bin "
-      "from y_origin, sampled with the gauges; for a channel periodic in x, the mean over the period "
-      "(coupling/velocity_profile.hpp)",
+      "the fluid's mean velocity across the flow (velocity_profile.csv: time,y,u,v,particles; y the particles' mean "
+      "height), in bins of height bin from y_origin, sampled with the gauges; for a channel periodic in x, the mean "
+      "over the period (coupling/velocity_profile.hpp)",
       {{"enabled", S::boolean("write velocity_profile.csv", false)},
        {"y_origin", S::number("y of one bin edge", "m", 0.0)},
-       {"bin", S::number("bin height; 0 = dp", "m", 0.0, 0.0, inf)}},
+       {"bin", S::number("bin height; 0 = the lattice's row spacing (dp, or 0.9306 dp on the hexagonal lattice)",
+                         "m", 0.0, 0.0, inf)}},
       false);
 }
 
@@ -285,8 +286,8 @@ Schema domain_schema() {
        {"max", S::vector("upper corner", "m", 2, std::nullopt)},
        {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must "
                                  "hold a whole number of lattice columns (dp apart, or 1.0746 dp on the hexagonal "
-                                 "lattice); walls along the channel may run past its ends (their points in the period "
-                                 "are kept); no rigid bodies", false)}},
+                                 "lattice, to within 0.1 % of one); walls and regions may run past its ends (their points "
+                                 "in the period are kept); no rigid bodies", false)}},
       false);
 }
 

@@ -66,8 +66,7 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   SettlingObserver observer(out, floating ? bodies.get() : nullptr, P, held_phases);
   const AdvanceResult result = advance<2>(sim, duration, {&observer});
   if (result.instability)
-    throw std::runtime_error(std::string(settling_instability_prefix) + std::to_string(result.instability->time) +
-                             " s: " + result.instability->reason);
+    throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
   for (std::size_t i = 0; i < P.real_count(); ++i) {

@@ -10,7 +10,9 @@
 // lattice (fluid/lattice.hpp), a stable packing, settling only compresses the water under its weight.
 // Bodies are left out while settling: their boundary particles stay where they are, like walls.
 #include <cstdint>
-#include <string_view>
+#include <cstdlib>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "coupling/simulation.hpp"
@@ -27,12 +29,30 @@ struct Relaxation {
   std::vector<double> largest_shift_by_phase;  // m, the same for each phase (index: Particles::phase)
 };
 
-// How the error of a settling that went unstable begins: "settling went unstable at t = T s: REASON" (T counted from
-// the start of settling). The sweep's results read it back (tools/sweep/sweep_results.cpp).
-inline constexpr std::string_view settling_instability_prefix = "settling went unstable at t = ";
+// The error of a settling that went unstable: "settling went unstable at t = T s: REASON", T counted from the start
+// of settling. The sweep's results read it back from a run's message (tools/sweep/sweep_results.cpp).
+inline constexpr const char* settling_instability_prefix = "settling went unstable at t = ";
+inline std::string settling_instability_message(double time, const std::string& reason) {
+  return settling_instability_prefix + std::to_string(time) + " s: " + reason;
+}
+struct SettlingInstability {
+  double time = 0.0;  // s from the start of settling
+  std::string reason;
+};
+// The instability a message holds (anywhere in it, as a run's refusal quotes it), or none.
+inline std::optional<SettlingInstability> parse_settling_instability(const std::string& message) {
+  const std::string prefix = settling_instability_prefix;
+  const auto at = message.find(prefix);
+  if (at == std::string::npos) return std::nullopt;
+  const std::string rest = message.substr(at + prefix.size());
+  const auto reason = rest.find(" s: ");
+  return SettlingInstability{std::strtod(rest.c_str(), nullptr),
+                             reason == std::string::npos ? std::string() : rest.substr(reason + 4)};
+}
 
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
-// settling goes unstable (its message: settling_instability_prefix above). On return the simulation is at time 0 with every fluid velocity zero.
+// settling goes unstable (its message: settling_instability_message above). On return the simulation is at time 0
+// with every fluid velocity zero.
 // held_phases: fluid particles of these phases (deformable slides) are held where they are while the water settles
 // around them, as a rigid slide is (their pressure still settles: they are put back after every step). Sediment
 // that is not held settles as a fluid (Simulation::set_rheology_suspended): its rheology starts at t = 0.

@@ -11,14 +11,14 @@
 namespace slide {
 
 struct VelocityProfileRow {
-  double y = 0.0;      // m, the bin's centre
+  double y = 0.0;      // m, mean height of its fluid particles
   double u = 0.0;      // m/s, mean x-velocity of its fluid particles
   double v = 0.0;      // m/s, mean y-velocity
   long particles = 0;
 };
 
 // The real fluid particles in bins [y_origin + k bin, y_origin + (k + 1) bin), k any integer: each non-empty bin's
-// mean velocity, in increasing y. Sums run in particle order, which is fixed (results are the same for any thread
+// mean height and velocity, in increasing y. Sums run in particle order, which is fixed (results are the same for any thread
 // count).
 template <int D>
 std::vector<VelocityProfileRow> velocity_profile(const Simulation<D>& sim, double y_origin, double bin) {
@@ -28,13 +28,14 @@ std::vector<VelocityProfileRow> velocity_profile(const Simulation<D>& sim, doubl
     if (P.kind[i] != Kind::fluid) continue;
     const long k = static_cast<long>(std::floor((P.position[i][1] - y_origin) / bin));
     VelocityProfileRow& r = bins[k];
+    r.y += P.position[i][1];
     r.u += P.velocity[i][0];
     r.v += P.velocity[i][1];
     ++r.particles;
   }
   std::vector<VelocityProfileRow> out;
   for (auto& [k, r] : bins) {
-    r.y = y_origin + (k + 0.5) * bin;
+    r.y /= r.particles;
     r.u /= r.particles;
     r.v /= r.particles;
     out.push_back(r);

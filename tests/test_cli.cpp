@@ -46,7 +46,7 @@ TEST(Cli, GoodSceneChecks) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
   // The 10 dp x 10 dp column holds the hexagonal lattice's points whose centre lies inside: rows 0.9306 dp apart
   // from 0.465 dp (11 rows up to 9.77 dp), columns 1.0746 dp apart (9 in each row), so 99 for its 100 dp^2.
-  EXPECT_NE(r.output.find("99 fluid"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": 99 fluid"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("10 sqrt(g H)"), std::string::npos) << r.output;
 }
 
@@ -270,8 +270,8 @@ TEST(Cli, OneAndTwoThreadsGiveIdenticalFiles) {
   }
 }
 
-// A run whose end time falls on the sample schedule samples it once: every time in gauges.csv and each body's rows
-// of bodies.csv comes once, in increasing order, and the last is the end time.
+// A run whose end time falls on the sample schedule samples it once: every time in gauges.csv and in bodies.csv
+// (one body) comes once, in increasing order, and the last is the end time. (Before, gauges.csv had the end twice.)
 TEST(Cli, TheEndTimeIsSampledOnce) {
   const fs::path out = fresh_directory("sampled_once");
   const CommandResult r = run_command(

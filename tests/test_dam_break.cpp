@@ -119,7 +119,8 @@ TEST(DamBreak, WallSlipChangesNoMoreThanTheRunToRunSpread) {
   double height_spread = 0.0, front_spread = 0.0;
   std::string spreads;
   for (const auto& p : perturbed) {
-    const double h = largest_difference(no_slip.first, p.first, false), z = largest_difference(no_slip.second, p.second, true);
+    const double h = largest_difference(no_slip.first, p.first, false);
+    const double z = largest_difference(no_slip.second, p.second, true);
     height_spread = std::max(height_spread, h), front_spread = std::max(front_spread, z);
     spreads += fmt::format(" {:.2f}/{:.2f}", 100 * h, 100 * z);
   }

@@ -168,8 +168,8 @@ ChannelRun run_shipped(const std::vector<std::string>& overrides, double n) {
   run.cpu_seconds = double(std::clock() - start) / CLOCKS_PER_SEC;
   run.error = channel_profile_error(sim, closed_form(n), H);
   // The sweep's measure (tools/measures/poiseuille_profile.hpp) reads the rows' mean velocities that
-  // velocity_profile.csv holds: their mean square error is the particles' less the spread within each row, so never
-  // more (to rounding: in this laminar channel the particles of a row move alike, and the two agree to rounding).
+  // velocity_profile.csv holds. The particles of a row stand at one height here, so its mean square error is the
+  // particles' less the spread within each row: never more (to rounding).
   CsvTable rows;
   rows.header = {"time", "y", "u", "v", "particles"};
   for (const auto& r : velocity_profile<2>(sim, 0.0, sim.options.dp))

@@ -178,13 +178,13 @@ TEST(SedimentBlock, MohrCoulombLayerStandsOnASlopeGentlerThanPhi) {
 
 // Measured: -8.5 % at dp 0.01 with the period a whole number of columns (-9.0 % with the former 0.2 m period, whose
 // seam left a gap of 1.6 columns in every row; -14 % with that seam and the points on the period's ends both kept).
-// With the former seam (all the figures below): -8.6 % at dp 0.005 (the same run as a scene); the floor holds the layer with 4 % more
-// than its weight's p tan(phi) (881 Pa against 846 Pa per m^2 of floor), at both spacings, so it is not resolution;
-// the consistency is not it either (K = 0.01 Pa s: -8.4 %), nor mostly the time step (CFL 0.1 and 0.05: -8.3 %
-// and -8.0 %). With the floor's friction bounded at tan(phi) itself
-// (basal_friction_angle: 30, fluid/basal_friction.hpp) it is -6.0 %: a third of the excess is the no-slip floor's
-// (the wall pairs take the particle's viscosity, from its own shear rate), the rest is inside the layer. Not pinned
-// down further; the stiff block on a Coulomb floor (tests/test_basal_friction.cpp) shows a like excess (-2.8 %).
+// With the former seam (all the figures below): -8.6 % at dp 0.005 (the same run as a scene); the floor holds the
+// layer with 4 % more than its weight's p tan(phi) (881 Pa against 846 Pa per m^2 of floor), at both spacings, so it
+// is not resolution; the consistency is not it either (K = 0.01 Pa s: -8.4 %), nor mostly the time step (CFL 0.1 and
+// 0.05: -8.3 % and -8.0 %). With the floor's friction bounded at tan(phi) itself (basal_friction_angle: 30,
+// fluid/basal_friction.hpp) it is -6.0 %: a third of the excess is the no-slip floor's (the wall pairs take the
+// particle's viscosity, from its own shear rate), the rest is inside the layer. Not pinned down further; the stiff
+// block on a Coulomb floor (tests/test_basal_friction.cpp) shows a like excess (-2.8 %).
 TEST(SedimentBlock, MohrCoulombLayerSlidesOnASlopeSteeperThanPhi) {
   const double a = 40.0 * M_PI / 180.0;
   const double rigid = g * (std::sin(a) - std::cos(a) * std::tan(30.0 * M_PI / 180.0));

@@ -141,8 +141,9 @@ def plot_stability_map(rows, plan, target):
             for j, yv in enumerate(ys):
                 cell = [r for r in rows if r[x_key] == xv and (y_key is None or r[y_key] == yv)
                         and (panel_key is None or r[panel_key] == panel)]
-                # A refused combination (invalid) did not run: it is shown only where nothing else in the cell ran.
-                ran = [r for r in cell if r["outcome"] != "invalid"]
+                # A refused combination (invalid) did not run, nor did a missing or interrupted one: these are shown
+                # only where nothing else in the cell ran.
+                ran = [r for r in cell if r["outcome"] not in ("invalid", "missing", "interrupted")]
                 cell = ran or cell
                 if not cell:
                     continue

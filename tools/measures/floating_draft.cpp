@@ -30,11 +30,15 @@ FloatingDraft floating_draft(const CsvTable& gauges, const CsvTable& bodies, dou
   std::vector<double> t, draft;
   for (std::size_t k = 0; k < times.size(); ++k) {
     if (times[k] < from_time) continue;
+    // The body's rows must cover the gauges' times: no reading beyond its ends.
+    if (times[k] < body_t.front() || times[k] > body_t.back())
+      throw std::runtime_error("gauges.csv has a row at t = " + std::to_string(times[k]) +
+                               " s, outside the times of bodies.csv");
     double level = 0.0;
     int n = 0;
     for (std::size_t c = 0; c < gauges.header.size(); ++c)
-      if (gauges.header[c] != "time") level += std::stod(gauges.rows[k][c]), ++n;
-    if (n == 0 || !std::isfinite(level)) continue;
+      if (gauges.header[c] != "time") level += std::stod(gauges.rows[k].at(c)), ++n;
+    if (n == 0 || !std::isfinite(level)) continue;  // a gauge without water there: the mean bridges the row
     t.push_back(times[k]);
     draft.push_back(level / n - (interpolate(body_t, body_y, times[k]) - 0.5 * height_m));
   }

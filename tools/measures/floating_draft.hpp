@@ -17,7 +17,8 @@ struct FloatingDraft {
 // free-surface elevation per gauge, in m) is the gauges' mean level less the box's bottom, y - height / 2, with y the
 // first body's centre in bodies.csv (columns time, body, y; linearly interpolated in time). The draft is the
 // trapezoidal time mean over from_time <= t; the exact draft is rho_body / rho_water x height.
-// std::runtime_error when fewer than two gauge rows from from_time on have a level at every gauge.
+// std::runtime_error when fewer than two gauge rows from from_time on have a level at every gauge, or when a gauge
+// row from from_time on falls outside the times of bodies.csv.
 FloatingDraft floating_draft(const CsvTable& gauges, const CsvTable& bodies, double height_m, double body_density,
                              double water_density, double from_time);
 

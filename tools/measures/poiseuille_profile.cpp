@@ -19,13 +19,19 @@ PoiseuilleProfileError poiseuille_profile_error(const CsvTable& profile, const H
   const double u_max = exact.max_velocity();
   double sum2 = 0.0, nearest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < time.size(); ++k) {
-    if (time[k] != e.time) continue;
+    if (time[k] != e.time) continue;  // every row of one sample carries the same time text
     const double d = (u[k] - exact.velocity(y[k] - centre)) / u_max;
     sum2 += count[k] * d * d;
     e.particles += std::lround(count[k]);
-    if (std::abs(y[k] - centre) < nearest) nearest = std::abs(y[k] - centre), e.centreline = (u[k] - u_max) / u_max;
+    nearest = std::min(nearest, std::abs(y[k] - centre));
   }
   e.rms = std::sqrt(sum2 / std::max(1L, e.particles));
+  // The centreline: the rows nearest the centre (two, either side, where the rows straddle it), by particles.
+  double centre_sum = 0.0, centre_count = 0.0;
+  for (std::size_t k = 0; k < time.size(); ++k)
+    if (time[k] == e.time && std::abs(y[k] - centre) <= nearest + 1e-9 * exact.half_width)
+      centre_sum += count[k] * u[k], centre_count += count[k];
+  e.centreline = (centre_sum / centre_count - u_max) / u_max;
   return e;
 }
 

@@ -11,7 +11,7 @@ namespace slide::tools {
 
 struct PoiseuilleProfileError {
   double rms = 0.0;         // over the last profile's rows weighted by their particles: (u - u_exact) / u_max
-  double centreline = 0.0;  // (u of the row nearest the centre - u_max) / u_max
+  double centreline = 0.0;  // (mean u of the rows nearest the centre - u_max) / u_max
   double time = 0.0;        // s, the profile's time
   long particles = 0;
 };

@@ -120,7 +120,7 @@ ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
     throw SceneError("error", "threshold, T_max and from_time must be numbers");
   }
   if (!(spec.from_time >= 0.0) || !std::isfinite(spec.from_time))
-    throw SceneError("error.from_time", "must be zero or positive");
+    throw SceneError("error.from_time", "must be a finite time >= 0");
   if (!(spec.threshold > 0.0)) throw SceneError("error.threshold", "must be positive");
   if (!(spec.T_max > 0.0) || !std::isfinite(spec.T_max)) throw SceneError("error.T_max", "must be positive");
   if (spec.measure == ErrorMeasure::dam_break_front) {

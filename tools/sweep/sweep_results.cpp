@@ -100,13 +100,11 @@ namespace {
 // scene), not invalid: its failure time is the settling time it failed at, its check the reason, and its note says
 // "while settling".
 void classify_settling_instability(RunResult& r) {
-  const auto at = r.note.find(settling_instability_prefix);
-  if (at == std::string::npos) return;
-  const std::string rest = r.note.substr(at + settling_instability_prefix.size());
-  const auto reason = rest.find(" s: ");
+  const auto instability = parse_settling_instability(r.note);
+  if (!instability) return;
   r.outcome = RunOutcome::unstable;
-  r.failure_time = std::strtod(rest.c_str(), nullptr);
-  r.failure_check = reason == std::string::npos ? std::string() : rest.substr(reason + 4);
+  r.failure_time = instability->time;
+  r.failure_check = instability->reason;
   r.note = "while settling (t counted from the start of settling)";
 }
 
