@@ -136,8 +136,9 @@ domain: {{min: [0, -0.05], max: [{p:.17g}, 0.3], periodic_x: true}}
 fluid:
   phases: [{{name: water}}]
   regions: [{{type: rectangle, min: [0, 0], max: [{p:.17g}, 0.1]}}]
-walls: [{{name: floor, points: [[-0.05, 0], [{end:.17g}, 0]]}}]
 method: {{initial_state: lattice}}
+walls:
+  - {{name: floor, points: [[-0.05, 0], [{end:.17g}, 0]]}}
 )",
                        fmt::arg("p", period), fmt::arg("end", period + 0.05));
   };
@@ -150,6 +151,14 @@ method: {{initial_state: lattice}}
     EXPECT_EQ(e.key_path, "domain.max");
     EXPECT_NE(e.message.find("whole number of columns"), std::string::npos) << e.message;
     EXPECT_NE(e.message.find(fmt::format("{:.17g}", 19.0 * a)), std::string::npos) << e.message;
+  }
+  // A wall with no point in the period is refused, naming it.
+  write_file(dir / "w.yaml", layer(19.0 * a) + "  - {name: outside, points: [[0.3, 0], [0.3, 0.2]]}\n");
+  try {
+    cases::build_scene(cases::load_scene(dir / "w.yaml", {}), "w");
+    ADD_FAILURE() << "expected a SceneError for walls[1].points";
+  } catch (const cases::SceneError& e) {
+    EXPECT_EQ(e.key_path, "walls[1].points");
   }
   for (const double columns : {19.0, 19.0005, 18.9995}) {
     const double period = columns * a;
