@@ -80,6 +80,8 @@ void Simulation<D>::restart_at_rest() {
   time_ = 0.0;
   step_count_ = 0;
   limit_counts_ = {};
+  largest_number_density_ratio_ = 1.0;
+  largest_number_density_ratio_time_ = 0.0;
   viscous_solves_ = {};
   initialise();
 }
@@ -222,7 +224,21 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   time_ += dt;
   ++step_count_;
   ++limit_counts_[static_cast<int>(limit)];
+  record_largest_compression();
   return check();
+}
+
+template <int D>
+void Simulation<D>::record_largest_compression() {
+  const auto& P = particles;
+  const double n_max = parallel_max(P.real_count(), 0.0, [&](std::size_t i) {
+    return P.kind[i] == Kind::fluid ? P.number_density[i] : 0.0;
+  });
+  const double ratio = n_max / lattice.n0;
+  if (ratio > largest_number_density_ratio_) {
+    largest_number_density_ratio_ = ratio;
+    largest_number_density_ratio_time_ = time_;
+  }
 }
 
 // Rheology: each fluid particle's viscosity from its phase's model at its shear rate (fluid/strain_rate.hpp, walls

@@ -65,6 +65,10 @@ class Simulation {
   double time() const { return time_; }
   long step_count() const { return step_count_; }
   const std::array<long, time_step_limit_count>& limit_counts() const { return limit_counts_; }  // per limit that ruled
+  // The largest n / n0 of any fluid particle after any step since t = 0, and when: the run's largest compression,
+  // which the sound speed bounds (density changes of order (u / c0)^2). 1 before the first step.
+  double largest_number_density_ratio() const { return largest_number_density_ratio_; }
+  double largest_number_density_ratio_time() const { return largest_number_density_ratio_time_; }
 
   // Rigid bodies two-way coupled with the fluid; null when the scene has none. 2-D only.
   const std::shared_ptr<RigidBodies>& bodies() const { return bodies_; }
@@ -127,6 +131,8 @@ class Simulation {
   double time_ = 0.0;
   long step_count_ = 0;
   std::array<long, time_step_limit_count> limit_counts_{};
+  double largest_number_density_ratio_ = 1.0, largest_number_density_ratio_time_ = 0.0;
+  void record_largest_compression();
   NeighborGrid<D> grid_;
   NeighborList list_;
   std::vector<Vec<D>> position_at_build_;

@@ -112,7 +112,8 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
   EXPECT_EQ(t.header, (std::vector<std::string>{"run", "particle_spacing", "method.gradient", "outcome", "particles",
                                                 "steps", "setup_seconds", "wall_seconds", "cpu_seconds",
                                                 "loop_cpu_seconds", "particle_steps_per_second", "error",
-                                                "failure_time", "failure_check", "note"}));
+                                                "largest_number_density_ratio", "failure_time", "failure_check",
+                                                "note"}));
   ASSERT_EQ(t.rows.size(), 4u);
   const auto cell = [&](int row, const std::string& column) { return t.rows[row].at(t.column(column)); };
   EXPECT_EQ(cell(0, "outcome"), "inaccurate");
@@ -125,6 +126,12 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
     EXPECT_LT(std::stod(cell(row, "failure_time")), 0.17);
     EXPECT_NE(cell(row, "failure_check").find("number-density collapse"), std::string::npos);
     EXPECT_EQ(cell(row, "error"), "");
+    // The collapse the check found is the run's largest compression (the scene's checks.max_number_density_ratio).
+    EXPECT_GT(std::stod(cell(row, "largest_number_density_ratio")), 1.5);
+  }
+  for (const int row : {0, 2}) {  // completed: compressed, never as far as a collapse
+    EXPECT_GT(std::stod(cell(row, "largest_number_density_ratio")), 1.0);
+    EXPECT_LT(std::stod(cell(row, "largest_number_density_ratio")), 1.5);
   }
   for (int row = 0; row < 4; ++row) {
     EXPECT_GT(std::stod(cell(row, "particles")), 0.0);

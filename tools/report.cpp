@@ -95,6 +95,10 @@ std::string run_body(const fs::path& dir) {
   body += row({"CPU time, s", number(value("cpu_seconds"))});
   body += row({"particle-steps per second", number(value("particle_steps_per_second"))});
   body += row({"threads", number(value("threads"))});
+  if (run.contains("largest_number_density_ratio"))
+    body += row({"largest n/n0 (compression), at t, s",
+                 number(run["largest_number_density_ratio"].value("value", NAN)) + " at " +
+                     number(run["largest_number_density_ratio"].value("time", NAN))});
   body += "</table>\n<h2>Time-step limits (steps each limit ruled)</h2>\n<table>\n";
   if (run.contains("time_step_limits"))
     for (auto it = run["time_step_limits"].begin(); it != run["time_step_limits"].end(); ++it)
@@ -157,7 +161,8 @@ std::string sweep_body(const fs::path& dir) {
   body += "<h2>Runs</h2>\n<table>\n";
   std::vector<std::string> header{"run"};
   header.insert(header.end(), s.varied_keys.begin(), s.varied_keys.end());
-  for (const char* c : {"outcome", "particles", "steps", "setup s", "loop s", "CPU s", "error", "failed at, s", "note"})
+  for (const char* c :
+       {"outcome", "particles", "steps", "setup s", "loop s", "CPU s", "error", "largest n/n0", "failed at, s", "note"})
     header.emplace_back(c);
   body += row(header, "th");
   for (const auto& r : results) {
@@ -165,7 +170,7 @@ std::string sweep_body(const fs::path& dir) {
     cells.insert(cells.end(), r.values.begin(), r.values.end());
     for (const auto& c : {std::string(run_outcome_names.name(r.outcome)), number(r.particles), number(r.steps),
                           number(r.setup_seconds), number(r.wall_seconds), number(r.cpu_seconds), number(r.error),
-                          number(r.failure_time), r.failure_check.empty() ? r.note : r.failure_check})
+                          number(r.largest_number_density_ratio), number(r.failure_time), r.failure_check.empty() ? r.note : r.failure_check})
       cells.push_back(c);
     body += row(cells);
   }

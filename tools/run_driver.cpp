@@ -199,6 +199,8 @@ int run_command(const RunArguments& args) {
     j["simulated_time"] = sim.time();
     j["steps"] = sim.step_count();
     j["neighbor_rebuilds"] = sim.neighbor_rebuilds();
+    j["largest_number_density_ratio"] = {{"value", sim.largest_number_density_ratio()},
+                                         {"time", sim.largest_number_density_ratio_time()}};
     const ViscousSolveStats& vs = sim.viscous_solves();
     j["viscous_scheme"] = to_string(sim.options.viscous_scheme);
     j["viscous_solves"] = {{"solves", vs.solves},

@@ -140,6 +140,8 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   r.cpu_seconds = number_or_nan(*j, "cpu_seconds");
   r.loop_cpu_seconds = number_or_nan(*j, "loop_cpu_seconds");
   r.particle_steps_per_second = number_or_nan(*j, "particle_steps_per_second");
+  if (j->contains("largest_number_density_ratio"))
+    r.largest_number_density_ratio = number_or_nan((*j)["largest_number_density_ratio"], "value");
   const std::string status = j->value("status", "");
   if (status == "unstable") {
     r.outcome = RunOutcome::unstable;
@@ -202,8 +204,8 @@ void write_results_csv(const Sweep& s, const std::vector<RunResult>& results, co
   std::vector<std::string> header{"run"};
   for (const auto& k : s.varied_keys) header.push_back(cell(k));
   for (const char* c : {"outcome", "particles", "steps", "setup_seconds", "wall_seconds", "cpu_seconds",
-                        "loop_cpu_seconds", "particle_steps_per_second", "error", "failure_time", "failure_check",
-                        "note"})
+                        "loop_cpu_seconds", "particle_steps_per_second", "error", "largest_number_density_ratio",
+                        "failure_time", "failure_check", "note"})
     header.emplace_back(c);
   std::string text = fmt::format("{}\n", fmt::join(header, ","));
   for (const auto& r : results) {
@@ -211,7 +213,7 @@ void write_results_csv(const Sweep& s, const std::vector<RunResult>& results, co
     for (const auto& v : r.values) row.push_back(cell(v));
     row.emplace_back(run_outcome_names.name(r.outcome));
     for (const double v : {r.particles, r.steps, r.setup_seconds, r.wall_seconds, r.cpu_seconds, r.loop_cpu_seconds,
-                           r.particle_steps_per_second, r.error, r.failure_time})
+                           r.particle_steps_per_second, r.error, r.largest_number_density_ratio, r.failure_time})
       row.push_back(number(v));
     row.push_back(cell(r.failure_check));
     row.push_back(cell(r.note));

@@ -35,6 +35,7 @@ struct RunResult {
   double setup_seconds = nan, wall_seconds = nan, particle_steps_per_second = nan;
   double cpu_seconds = nan, loop_cpu_seconds = nan;  // the whole process's, and the step loop's
   double error = nan;         // the sweep's measure; NaN without one or where it could not be computed
+  double largest_number_density_ratio = nan;  // the run's largest n / n0 of any fluid particle (its compression)
   double failure_time = nan;  // s, unstable runs
   std::string failure_check;  // unstable runs: the check that fired
   std::string note;           // why the error is missing, or why the run was refused
@@ -51,7 +52,7 @@ RunResult collect_run(const Sweep& sweep, const SweepRun& run, const std::filesy
 std::vector<RunResult> collect_results(const Sweep& sweep, const std::filesystem::path& dir);
 
 // results.csv: run, the varied keys, outcome, particles, steps, setup_seconds, wall_seconds, cpu_seconds,
-// loop_cpu_seconds, particle_steps_per_second, error, failure_time, failure_check, note. Cells never hold a comma (a list value's
+// loop_cpu_seconds, particle_steps_per_second, error, largest_number_density_ratio, failure_time, failure_check, note. Cells never hold a comma (a list value's
 // commas become ';').
 void write_results_csv(const Sweep& sweep, const std::vector<RunResult>& results, const std::filesystem::path& file);
 
