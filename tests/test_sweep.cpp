@@ -225,6 +225,19 @@ vary:
   EXPECT_NEAR(std::stod(row[t.column("failure_time")]), 0.165098, 1e-6);
   EXPECT_NE(row[t.column("failure_check")].find("number-density collapse"), std::string::npos);
   EXPECT_NE(row[t.column("note")].find("while settling"), std::string::npos);
+
+  // The refusal is recorded in the run's folder: resuming does not settle it again, and --collect from the run
+  // folders alone (no logs) classifies it the same.
+  const CommandResult again = run_command(slide_binary() + " sweep " + (dir / "s.yaml").string() + " --out " +
+                                          (dir / "out").string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("1 finished already, 0 to run"), std::string::npos) << again.output;
+  const fs::path elsewhere = dir / "elsewhere";
+  fs::create_directories(elsewhere);
+  fs::copy(dir / "out/runs", elsewhere / "runs", fs::copy_options::recursive);
+  fs::copy(dir / "out/plan.json", elsewhere / "plan.json");
+  ASSERT_EQ(run_command(slide_binary() + " sweep --collect " + elsewhere.string()).exit_code, 0);
+  EXPECT_EQ(read_file(elsewhere / "results.csv"), read_file(dir / "out/results.csv"));
 }
 
 // A run folder made with other settings (the sweep file was edited since) is not taken as finished: it runs again.

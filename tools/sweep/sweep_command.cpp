@@ -134,6 +134,7 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
     const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     write_file_atomically(dir / "logs" / (run->name + ".exit"), std::to_string(exit_code) + "\n");
+    if (exit_code == 2) write_refusal(s, *run, run_folder(dir, *run), dir / "logs" / (run->name + ".log"));
     const char* what = exit_code == 0     ? "completed"
                        : exit_code == 2   ? "refused"
                        : exit_code == 3   ? "unstable"

@@ -20,17 +20,42 @@ namespace {
 
 using json = nlohmann::json;
 
-// The run's run.json, if there is one made with this run's overrides.
-std::optional<json> read_run_json(const std::filesystem::path& run_folder, const SweepRun& run) {
-  std::ifstream in(run_folder / "run.json");
+// A JSON file in the run's folder (run.json, refused.json), if there is one made with this run's overrides.
+std::optional<json> read_run_record(const std::filesystem::path& file, const SweepRun& run) {
+  std::ifstream in(file);
   if (!in) return std::nullopt;
   try {
     json j = json::parse(in);
     if (!j.contains("overrides") || j["overrides"] != json(run.overrides)) return std::nullopt;
     return j;
   } catch (const json::exception&) {
-    return std::nullopt;  // a run.json being replaced, or damaged: treated as missing
+    return std::nullopt;  // a file being replaced, or damaged: treated as missing
   }
+}
+
+std::optional<json> read_run_json(const std::filesystem::path& run_folder, const SweepRun& run) {
+  return read_run_record(run_folder / "run.json", run);
+}
+
+// A small file's text without its trailing newline; empty if it cannot be read.
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  return text;
+}
+
+std::string last_line(const std::string& text) {
+  const auto k = text.find_last_of('\n');
+  return k == std::string::npos ? text : text.substr(k + 1);
+}
+
+// "slide: invalid scene FILE: KEY: what" -> "KEY: what"
+std::string refusal_message(const Sweep& s, const std::string& log_text) {
+  std::string line = last_line(log_text);
+  const std::string prefix = "slide: invalid scene " + s.scene.string() + ": ";
+  if (line.rfind(prefix, 0) == 0) line = line.substr(prefix.size());
+  return line;
 }
 
 double number_or_nan(const json& j, const char* key) {
@@ -64,19 +89,6 @@ void measure_error(const Sweep& s, const std::filesystem::path& run_folder, cons
   }
 }
 
-// A small file's text without its trailing newline; empty if it cannot be read.
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-  return text;
-}
-
-std::string last_line(const std::string& text) {
-  const auto k = text.find_last_of('\n');
-  return k == std::string::npos ? text : text.substr(k + 1);
-}
-
 std::string cell(std::string text) {
   std::replace(text.begin(), text.end(), ',', ';');
   std::replace(text.begin(), text.end(), '\n', ' ');
@@ -87,7 +99,15 @@ std::string number(double v) { return std::isnan(v) ? "" : fmt::format("{:.6g}",
 
 }  // namespace
 
+void write_refusal(const Sweep& s, const SweepRun& run, const std::filesystem::path& run_folder,
+                   const std::filesystem::path& log_file) {
+  std::filesystem::create_directories(run_folder);
+  const json j{{"overrides", run.overrides}, {"status", "refused"}, {"message", refusal_message(s, read_text(log_file))}};
+  write_file_atomically(run_folder / "refused.json", j.dump(2) + "\n");
+}
+
 bool run_is_finished(const std::filesystem::path& run_folder, const SweepRun& run) {
+  if (read_run_record(run_folder / "refused.json", run)) return true;
   const auto j = read_run_json(run_folder, run);
   if (!j || !j->contains("status")) return false;
   const std::string status = (*j)["status"].get<std::string>();
@@ -119,13 +139,11 @@ RunResult collect_run(const Sweep& s, const SweepRun& run, const std::filesystem
   const auto j = read_run_json(run_folder, run);
   const std::string exit_code = read_text(dir / "logs" / (run.name + ".exit"));
   if (!j) {
-    if (exit_code == "2") {
+    const auto refusal = read_run_record(run_folder / "refused.json", run);
+    if (refusal || exit_code == "2") {
       r.outcome = RunOutcome::invalid;
-      // "slide: invalid scene FILE: KEY: what" -> "KEY: what"
-      std::string line = last_line(read_text(dir / "logs" / (run.name + ".log")));
-      const std::string prefix = "slide: invalid scene " + s.scene.string() + ": ";
-      if (line.rfind(prefix, 0) == 0) line = line.substr(prefix.size());
-      r.note = line;
+      r.note = refusal ? refusal->value("message", "")
+                       : refusal_message(s, read_text(dir / "logs" / (run.name + ".log")));  // no refused.json: older
       classify_settling_instability(r);
     } else if (!exit_code.empty() && exit_code != "0" && exit_code != "3" && exit_code != "130") {
       r.outcome = RunOutcome::failed;

@@ -41,8 +41,14 @@ struct RunResult {
   std::string note;           // why the error is missing, or why the run was refused
 };
 
-// Whether a run's folder holds a finished run of these settings (completed or unstable: running it again gives the
-// same). A run.json whose overrides differ (the sweep file was edited) is not this run's.
+// A refused run's record (refused.json in its folder: its overrides and the refusal's last line without the scene's
+// name), written by the sweep when a run exits 2. The run itself writes nothing, and a refusal after settling (still
+// water that went unstable or moved) costs the whole settling time: resuming does not run it again.
+void write_refusal(const Sweep& sweep, const SweepRun& run, const std::filesystem::path& run_folder,
+                   const std::filesystem::path& log_file);
+
+// Whether a run's folder holds a finished run of these settings (completed, unstable or refused: running it again
+// gives the same). A run.json or refused.json whose overrides differ (the sweep file was edited) is not this run's.
 bool run_is_finished(const std::filesystem::path& run_folder, const SweepRun& run);
 
 // A run's row from the sweep folder DIR: DIR/runs/<name>/ and, for a refused run, DIR/logs/<name>.exit and .log.
