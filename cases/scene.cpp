@@ -2,8 +2,10 @@
 // file under cases/, sharing a SceneBuild: cases/scene_build.hpp).
 #include "cases/scene.hpp"
 
+#include <set>
 #include <stdexcept>
 
+#include "cases/duplicate_keys.hpp"
 #include "cases/scene_build.hpp"
 
 namespace slide::cases {
@@ -20,7 +22,13 @@ YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::
     throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
   }
   if (!raw.IsMap()) throw SceneError("<root>", "a scene file must be a YAML mapping");
-  for (const auto& o : overrides) apply_override(raw, o);
+  if (const auto d = find_duplicate_key(raw)) throw SceneError(d->path, duplicate_key_message(*d));
+  std::set<std::string> overridden;  // a key set twice on the command line is as ambiguous as twice in the file
+  for (const auto& o : overrides) {
+    const std::string path = o.substr(0, o.find('='));
+    if (!overridden.insert(path).second) throw SceneError("--set", "key " + path + " is set twice; keep one");
+    apply_override(raw, o);
+  }
   return scene_schema().resolve(raw);
 }
 

@@ -1,5 +1,7 @@
 #include "cases/schema.hpp"
 
+#include "cases/duplicate_keys.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -682,6 +684,7 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   } catch (const YAML::Exception& e) {
     bad_override(assignment, std::string("cannot parse the value as YAML: ") + e.msg);
   }
+  if (const auto d = find_duplicate_key(value)) bad_override(assignment, "key " + d->path + " " + duplicate_key_message(*d));
 
   // An empty scene is a null node without storage; give it a map to hang keys on.
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);

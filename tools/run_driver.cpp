@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "cases/check_report.hpp"
@@ -17,6 +18,7 @@
 #include "coupling/surge_front.hpp"
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
+#include "tools/output_folder.hpp"
 #include "tools/run_outputs.hpp"
 #include "tools/sweep/recommendation.hpp"
 #include "tools/snapshot_writer.hpp"
@@ -74,15 +76,31 @@ std::string limit_summary(const std::array<long, time_step_limit_count>& counts)
   return s;
 }
 
-// Reads, checks and builds the scene; on a scene error prints it and returns null (the caller exits 2).
-std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
+// Reads and checks the scene file with the overrides (nothing built yet); on a scene error prints it and returns
+// nothing (the caller exits 2).
+std::optional<YAML::Node> resolve_or_report(const RunArguments& args) {
   try {
-    return cases::build_scene(cases::load_scene(args.scene, args.overrides), args.scene.stem().string(),
+    return cases::load_scene(args.scene, args.overrides);
+  } catch (const cases::SceneError& e) {
+    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
+}
+
+// Builds the resolved scene; on a scene error prints it and returns null (the caller exits 2).
+std::unique_ptr<cases::Scene> build_or_report(const RunArguments& args, const YAML::Node& resolved) {
+  try {
+    return cases::build_scene(resolved, args.scene.stem().string(),
                               args.scene.parent_path().empty() ? "." : args.scene.parent_path());
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
     return nullptr;
   }
+}
+
+std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
+  const auto resolved = resolve_or_report(args);
+  return resolved ? build_or_report(args, *resolved) : nullptr;
 }
 
 }  // namespace
@@ -161,10 +179,19 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
-  const std::unique_ptr<cases::Scene> scene = load_or_report(args);
+  const auto resolved = resolve_or_report(args);
+  if (!resolved) return 2;
+  // The output folder is checked before anything is built or written (the case's name may come from the scene).
+  const std::string name = (*resolved)["name"].as<std::string>();
+  const std::filesystem::path out =
+      args.out.empty() ? std::filesystem::path("runs") / (name.empty() ? args.scene.stem().string() : name) : args.out;
+  if (const auto why = output_folder_problem(out)) {
+    std::cerr << "slide: --out " << out.string() << ": " << *why << "; nothing was run or written\n";
+    return 2;
+  }
+  const std::unique_ptr<cases::Scene> scene = build_or_report(args, *resolved);
   if (!scene) return 2;
   auto& sim = *scene->simulation;
-  const std::filesystem::path out = args.out.empty() ? std::filesystem::path("runs") / scene->name : args.out;
   std::filesystem::create_directories(out);
   RunOutputs outputs(*scene, out);
 

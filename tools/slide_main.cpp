@@ -8,7 +8,8 @@
 #include "tools/run_driver.hpp"
 #include "tools/sweep/sweep_command.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+int run_main(int argc, char** argv) {
   CLI::App app{"slide: weakly compressible MPS simulator of landslides falling into water"};
   app.require_subcommand(1);
   slide::tools::RunArguments args;
@@ -18,14 +19,15 @@ int main(int argc, char** argv) {
   run->add_option("scene", scene, "scene file (YAML)")->required();
   run->add_option("--out", args.out, "output folder (default runs/<case name>)");
   run->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
-  run->add_option("--threads", args.threads, "number of threads (default: all)");
+  run->add_option("--threads", args.threads, "number of threads (default: all)")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", args.quiet, "no progress line");
 
   auto* check = app.add_subcommand("check", "validate a scene and print what it would run; runs nothing");
   check->add_option("scene", scene, "scene file (YAML)")->required();
   check->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
   auto* target = check->add_option("--target-error", args.target_error,
-                                   "with --with: name the cheapest configuration of that sweep whose error is at most this");
+                                   "with --with: name the cheapest configuration of that sweep whose error is at most this")
+                    ->check(CLI::PositiveNumber);
   std::string with_dir;
   auto* with = check->add_option("--with", with_dir, "a finished sweep's folder (slide sweep) of the same kind of scene");
   target->needs(with);
@@ -43,7 +45,8 @@ int main(int argc, char** argv) {
                                             "sweep_file.hpp) and write results.csv; resumes where it stopped");
   sweep->add_option("sweep", sweep_file, "sweep file (YAML)");
   sweep->add_option("--out", sweep_out, "sweep folder (default runs/<sweep name>)");
-  sweep->add_option("--jobs", sweep_args.jobs, "runs at once, each with cores / jobs threads (default 1)");
+  sweep->add_option("--jobs", sweep_args.jobs, "runs at once, each with cores / jobs threads (default 1)")
+      ->check(CLI::Range(1, 1024));
   sweep->add_flag("--plan-only", sweep_args.plan_only,
                   "write plan.json and jobs.txt (one command per run, for xargs -P or a cluster's job array); run "
                   "nothing");
@@ -77,4 +80,18 @@ int main(int argc, char** argv) {
     return slide::tools::sweep_command(sweep_args);
   }
   return slide::tools::run_command(args);
+}
+}  // namespace
+
+// Nothing escapes: whatever a command did not expect ends the process with exit 1 and one line (a run in its step
+// loop has already written its last good state and run.json by then: tools/run_driver.cpp).
+int main(int argc, char** argv) {
+  try {
+    return run_main(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "slide: error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "slide: error: unknown exception\n";
+  }
+  return 1;
 }

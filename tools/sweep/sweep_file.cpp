@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cases/duplicate_keys.hpp"
 #include "cases/scene.hpp"
 #include "cases/schema.hpp"
 
@@ -26,6 +27,7 @@ YAML::Node load_yaml(const std::filesystem::path& file) {
   try {
     const YAML::Node root = YAML::LoadFile(file.string());
     if (!root.IsMap()) throw SceneError("<root>", "a sweep file must be a YAML mapping");
+    if (const auto d = cases::find_duplicate_key(root)) throw SceneError(d->path, cases::duplicate_key_message(*d));
     return root;
   } catch (const YAML::BadFile&) {
     throw SceneError("<file>", "cannot read sweep file " + file.string());
