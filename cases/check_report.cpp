@@ -3,12 +3,24 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 
+#include "cases/particle_budget.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/water_gap.hpp"
 
 namespace slide::cases {
 namespace {
+
+// " of N MB available (source)", or nothing where the limit cannot be read.
+std::string memory_available() {
+  try {
+    if (const auto limit = memory_limit())
+      return fmt::format(" of {:.0f} MB available ({})", limit->bytes / 1e6, limit->source);
+  } catch (const std::invalid_argument&) {  // refused with its message before the scene was built
+  }
+  return "";
+}
 
 std::string summary(const Scene& scene) {
   const auto& sim = *scene.simulation;
@@ -25,7 +37,7 @@ std::string summary(const Scene& scene) {
       "initial dt      {:.6g} s, limited by {}\n"
       "end time        {} s (about {:.0f} steps at the initial dt)\n"
       "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
-      "memory          about {:.1f} MB\n",
+      "memory          about {:.1f} MB{}\n",
       scene.name, sim.particles.real_count(), scene.fluid_count, scene.wall_count, scene.dummy_count, o.dp,
       o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
       scene.lattice_offset[1] != 0.0
@@ -33,7 +45,7 @@ std::string summary(const Scene& scene) {
           : std::string(),
       sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene.sound_speed_source, to_string(o.gradient), dt, to_string(limit), scene.end_time, scene.end_time / dt,
-      o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1], memory_estimate_mb(sim));
+      o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1], memory_estimate_mb(sim), memory_available());
 }
 
 std::string start(const Scene& scene) {
@@ -97,11 +109,8 @@ std::string bodies(const Scene& scene) {
 }  // namespace
 
 double memory_estimate_mb(const Simulation<2>& sim) {
-  const std::size_t n = sim.particles.size();  // periodic ghosts included: they take memory
-  const std::size_t per_particle = 4 * sizeof(Vec<2>) + 5 * sizeof(double) + 2 + 4 + sizeof(Vec<2>) + 8;
-  const std::size_t list = n * sim.neighbors().capacity * sizeof(std::uint32_t) + n * 4;
-  // The run keeps one more copy of the particles as the last good state, and a position copy for the skin test.
-  return (2.0 * n * per_particle + n * sizeof(Vec<2>) * 2 + list) / 1.0e6;
+  // periodic ghosts included: they take memory
+  return run_memory_bytes(double(sim.particles.size()), sim.neighbors().capacity) / 1.0e6;
 }
 
 // A phase's wall condition (fluid/basal_friction.hpp).

@@ -42,6 +42,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   read_fluid_options(b);
   check_lattice_choices(b);
   check_period(b);
+  check_particle_budget(b);  // before any particle is made
   b.phases = read_phases(r["fluid"]["phases"]);
   build_walls(b);  // first: below_level regions need the faces, bodies the lattice offset and faces
   build_slides_and_bodies(b);

@@ -87,6 +87,7 @@ struct SceneBuild {
 void read_fluid_options(SceneBuild& b);        // build_options.cpp
 void check_lattice_choices(SceneBuild& b);     // build_options.cpp
 void check_period(SceneBuild& b);             // build_options.cpp
+void check_particle_budget(SceneBuild& b);     // build_particle_budget.cpp
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
 void build_walls(SceneBuild& b);               // build_walls.cpp
 void build_slides_and_bodies(SceneBuild& b);   // build_bodies.cpp

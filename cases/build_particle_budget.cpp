@@ -1,0 +1,94 @@
+// Step: the scene's particle count, estimated from its geometry before any particle is made, against what slide
+// indexes and what this machine's memory holds (cases/particle_budget.hpp). A scene over either is refused naming
+// particle_spacing: made anyway, it would allocate until the machine swaps and the run appears to hang.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "cases/particle_budget.hpp"
+#include "cases/scene_build.hpp"
+#include "fluid/walls.hpp"
+
+namespace slide::cases {
+namespace {
+
+double polygon_area(const std::vector<Vec<2>>& p) {
+  double twice = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto& a = p[k];
+    const auto& c = p[(k + 1) % p.size()];
+    twice += a[0] * c[1] - c[0] * a[1];
+  }
+  return 0.5 * std::abs(twice);
+}
+
+double polyline_length(const std::vector<Vec<2>>& p) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < p.size(); ++k) length += (p[k] - p[k - 1]).norm();
+  return length;
+}
+
+// Both lattices hold one point per dp^2 (the hexagonal one's columns 1.0746 dp apart, rows 0.9306 dp). Regions and
+// slides: their area; below_level water: the walls' width times its depth below the level (an upper bound); walls:
+// their length times their layers; rigid bodies: the larger of their area and their perimeter times the layers.
+double estimated_particles(const SceneBuild& b) {
+  const double dp = b.dp, cell = dp * dp;
+  const int auto_layers = boundary_layers(b.sim->options.re_over_dp);
+  double n = 0.0;
+  Vec<2> wall_lo = Vec<2>::Constant(INFINITY), wall_hi = Vec<2>::Constant(-INFINITY);
+  for (const auto& wn : b.r["walls"]) {
+    const auto pts = points_of(wn["points"]);
+    for (const auto& q : pts) wall_lo = wall_lo.cwiseMin(q), wall_hi = wall_hi.cwiseMax(q);
+    const long layers = wn["layers"].as<long>();
+    n += (polyline_length(pts) / dp + 1.0) * double(layers == 0 ? auto_layers : layers);
+  }
+  for (const auto& rn : b.r["fluid"]["regions"]) {
+    const std::string type = rn["type"].as<std::string>();
+    if (type == "rectangle") {
+      const Vec<2> lo = vec2(rn["min"]), hi = vec2(rn["max"]);
+      n += std::max(0.0, hi[0] - lo[0]) * std::max(0.0, hi[1] - lo[1]) / cell;
+    } else if (type == "polygon") {
+      n += polygon_area(points_of(rn["points"])) / cell;
+    } else if (wall_lo[0] < wall_hi[0]) {  // below_level, inside the walls
+      n += (wall_hi[0] - wall_lo[0]) * std::max(0.0, std::min(rn["level"].as<double>(), wall_hi[1]) - wall_lo[1]) / cell;
+    }
+  }
+  for (std::size_t k = 0; k < b.r["bodies"].size(); ++k) {
+    const auto outline = body_outline(b.r["bodies"][k], fmt::format("bodies[{}]", k));
+    std::vector<Vec<2>> p;
+    for (const auto& v : outline) p.push_back(from_rigid(v));
+    p.push_back(p.front());
+    n += std::max(polygon_area(p) / cell, polyline_length(p) / dp * auto_layers);
+  }
+  return n;
+}
+
+std::string size_text(double bytes) {
+  return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9) : fmt::format("{:.3g} MB", bytes / 1e6);
+}
+
+}  // namespace
+
+void check_particle_budget(SceneBuild& b) {
+  const double n = estimated_particles(b);
+  if (n > 4294967295.0)
+    throw SceneError("particle_spacing", fmt::format("the scene would make about {:.3g} particles at dp = {} m, more "
+                                                     "than slide can index (2^32 - 1); use a larger particle_spacing",
+                                                     n, b.dp));
+  std::optional<MemoryLimit> limit;
+  try {
+    limit = memory_limit();
+  } catch (const std::invalid_argument& e) {
+    throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
+  }
+  const double bytes = run_memory_bytes(n, 32);
+  if (limit && bytes > limit->bytes)
+    throw SceneError("particle_spacing",
+                     fmt::format("the scene would make about {:.3g} particles at dp = {} m and need about {} of "
+                                 "memory, more than the {} available ({}); use a larger particle_spacing",
+                                 n, b.dp, size_text(bytes), size_text(limit->bytes), limit->source));
+}
+
+}  // namespace slide::cases

@@ -1,0 +1,24 @@
+#pragma once
+// How many particles this machine's memory holds, and the run's memory per particle: what `slide check` reports and
+// what a scene is refused against before any particle is made (cases/build_particle_budget.cpp).
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace slide::cases {
+
+// Bytes a run holds for n particles whose neighbour lists have `list_capacity` slots: the particles twice (the state
+// and the last good state a failed run writes), two position copies (the neighbour list's skin test) and the list.
+double run_memory_bytes(double n, std::size_t list_capacity);
+
+struct MemoryLimit {
+  double bytes = 0.0;
+  std::string source;  // where the figure comes from, for messages
+};
+
+// The memory a run may use: the environment's SLIDE_MEMORY_LIMIT (bytes, or with a k/M/G suffix: a cluster job's
+// share) if set, else the smaller of MemAvailable in /proc/meminfo and a cgroup v2 limit's headroom. Nothing where
+// none of these can be read. Throws std::invalid_argument for a SLIDE_MEMORY_LIMIT that is not a positive size.
+std::optional<MemoryLimit> memory_limit();
+
+}  // namespace slide::cases
