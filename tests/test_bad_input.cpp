@@ -81,5 +81,18 @@ TEST(BadInput, AKeyGivenTwiceIsRefusedNamingIt) {
                  {"vary: appears twice (lines 2 and 3)"});
 }
 
+// A scene whose particles would not fit the memory limit (here SLIDE_MEMORY_LIMIT, as a cluster job's share) or
+// slide's 2^32 index: exit 2 on particle_spacing, stating the estimate and the limit, before any particle is made.
+TEST(BadInput, ASceneThatDoesNotFitTheMemoryIsRefused) {
+  const fs::path dir = fresh_directory("bad_memory");
+  write_file(dir / "scene.yaml", kScene);
+  const std::string check = slide_binary() + " check " + (dir / "scene.yaml").string();
+  expect_refused(run_command("SLIDE_MEMORY_LIMIT=50k " + check),
+                 {"particle_spacing", "more than the 0.05 MB available (SLIDE_MEMORY_LIMIT)"});
+  expect_refused(run_command(check + " --set particle_spacing=1e-6"), {"particle_spacing", "2^32 - 1"});
+  expect_refused(run_command("SLIDE_MEMORY_LIMIT=lots " + check), {"SLIDE_MEMORY_LIMIT"});
+  EXPECT_EQ(run_command("SLIDE_MEMORY_LIMIT=1G " + check).exit_code, 0);
+}
+
 }  // namespace
 }  // namespace slide::testing
