@@ -14,14 +14,11 @@
 namespace slide::cases {
 namespace {
 
+// Area of a closed polygon given by its vertices (rigid/polygon.hpp's formula: scene_geometry.hpp).
 double polygon_area(const std::vector<Vec<2>>& p) {
-  double twice = 0.0;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const auto& a = p[k];
-    const auto& c = p[(k + 1) % p.size()];
-    twice += a[0] * c[1] - c[0] * a[1];
-  }
-  return 0.5 * std::abs(twice);
+  std::vector<rigid::Vec2> v;
+  for (const auto& q : p) v.push_back(to_rigid(q));
+  return std::abs(rigid::signed_area(v));
 }
 
 double polyline_length(const std::vector<Vec<2>>& p) {
@@ -57,10 +54,10 @@ double estimated_particles(const SceneBuild& b) {
   }
   for (std::size_t k = 0; k < b.r["bodies"].size(); ++k) {
     const auto outline = body_outline(b.r["bodies"][k], fmt::format("bodies[{}]", k));
-    std::vector<Vec<2>> p;
-    for (const auto& v : outline) p.push_back(from_rigid(v));
-    p.push_back(p.front());
-    n += std::max(polygon_area(p) / cell, polyline_length(p) / dp * auto_layers);
+    std::vector<Vec<2>> closed;
+    for (const auto& v : outline) closed.push_back(from_rigid(v));
+    closed.push_back(closed.front());
+    n += std::max(std::abs(rigid::signed_area(outline)) / cell, polyline_length(closed) / dp * auto_layers);
   }
   return n;
 }

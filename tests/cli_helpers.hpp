@@ -27,6 +27,18 @@ inline CommandResult run_command(const std::string& command) {
   return r;
 }
 
+// A small valid scene (a water column, not at rest, so it starts from the lattice rather than settling); each bad-input
+// test changes one thing.
+inline const char* kGoodScene = R"(particle_spacing: 0.02
+end_time: 0.01
+fluid:
+  phases: [{name: water}]
+  regions: [{type: rectangle, min: [0, 0], max: [0.2, 0.2]}]
+walls:
+  - points: [[0, 0.4], [0, 0], [0.6, 0], [0.6, 0.4]]
+method: {initial_state: lattice}
+)";
+
 inline std::string slide_binary() { return SLIDE_BINARY; }
 inline std::filesystem::path source_dir() { return SLIDE_SOURCE_DIR; }
 

@@ -11,16 +11,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kScene = R"(particle_spacing: 0.02
-end_time: 0.01
-fluid:
-  phases: [{name: water}]
-  regions: [{type: rectangle, min: [0, 0], max: [0.2, 0.2]}]
-walls:
-  - points: [[0, 0.4], [0, 0], [0.6, 0], [0.6, 0.4]]
-method: {initial_state: lattice}
-)";
-
 std::set<std::string> listing(const fs::path& dir) {
   std::set<std::string> names;
   for (const auto& e : fs::recursive_directory_iterator(dir)) names.insert(e.path().string());
@@ -36,7 +26,7 @@ void expect_refused(const CommandResult& r, const std::vector<std::string>& said
 // and the path, and the folder holding the scene is as it was (nothing written, not even a partial folder).
 TEST(BadInput, AnOutputFolderThatCannotBeWrittenIsRefusedBeforeAnythingRuns) {
   const fs::path dir = fresh_directory("bad_out");
-  write_file(dir / "scene.yaml", kScene);
+  write_file(dir / "scene.yaml", kGoodScene);
   write_file(dir / "afile", "not a folder\n");
   const auto before = listing(dir);
   const std::string run = slide_binary() + " run " + (dir / "scene.yaml").string() + " --quiet --out ";
@@ -50,7 +40,7 @@ TEST(BadInput, AnOutputFolderThatCannotBeWrittenIsRefusedBeforeAnythingRuns) {
 // Command-line values out of range: exit 2 naming the option.
 TEST(BadInput, OutOfRangeCommandLineValuesAreRefused) {
   const fs::path dir = fresh_directory("bad_args");
-  write_file(dir / "scene.yaml", kScene);
+  write_file(dir / "scene.yaml", kGoodScene);
   const std::string scene = (dir / "scene.yaml").string();
   const auto before = listing(dir);
   for (const char* threads : {"0", "-2", "100000", "two"})
@@ -67,9 +57,9 @@ TEST(BadInput, OutOfRangeCommandLineValuesAreRefused) {
 // would keep the first silently; slide names the key and both lines.
 TEST(BadInput, AKeyGivenTwiceIsRefusedNamingIt) {
   const fs::path dir = fresh_directory("bad_duplicate");
-  write_file(dir / "top.yaml", std::string(kScene) + "end_time: 0.02\n");
-  write_file(dir / "nested.yaml", std::string(kScene) + "time_step: {cfl: 0.2, cfl: 0.3}\n");
-  write_file(dir / "scene.yaml", kScene);
+  write_file(dir / "top.yaml", std::string(kGoodScene) + "end_time: 0.02\n");
+  write_file(dir / "nested.yaml", std::string(kGoodScene) + "time_step: {cfl: 0.2, cfl: 0.3}\n");
+  write_file(dir / "scene.yaml", kGoodScene);
   const std::string check = slide_binary() + " check ";
   expect_refused(run_command(check + (dir / "top.yaml").string()), {"end_time: appears twice (lines 2 and 9)"});
   expect_refused(run_command(check + (dir / "nested.yaml").string()), {"time_step.cfl: appears twice"});
@@ -85,7 +75,7 @@ TEST(BadInput, AKeyGivenTwiceIsRefusedNamingIt) {
 // slide's 2^32 index: exit 2 on particle_spacing, stating the estimate and the limit, before any particle is made.
 TEST(BadInput, ASceneThatDoesNotFitTheMemoryIsRefused) {
   const fs::path dir = fresh_directory("bad_memory");
-  write_file(dir / "scene.yaml", kScene);
+  write_file(dir / "scene.yaml", kGoodScene);
   const std::string check = slide_binary() + " check " + (dir / "scene.yaml").string();
   expect_refused(run_command("SLIDE_MEMORY_LIMIT=50k " + check),
                  {"particle_spacing", "more than the 0.05 MB available (SLIDE_MEMORY_LIMIT)"});

@@ -17,18 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A small valid scene; each bad-scene test changes one thing.
-// A water column (not at rest, so it starts from the lattice rather than settling).
-const char* kGoodScene = R"(particle_spacing: 0.02
-end_time: 0.01
-fluid:
-  phases: [{name: water}]
-  regions: [{type: rectangle, min: [0, 0], max: [0.2, 0.2]}]
-walls:
-  - points: [[0, 0.4], [0, 0], [0.6, 0], [0.6, 0.4]]
-method: {initial_state: lattice}
-)";
-
 CommandResult check_scene(const std::string& text, const std::string& extra = "") {
   const fs::path dir = fresh_directory("scene");
   write_file(dir / "scene.yaml", text);
