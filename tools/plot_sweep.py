@@ -152,7 +152,7 @@ def plot_stability_map(rows, plan, target):
                 note = worst["outcome"]
                 if worst["outcome"] == "unstable" and worst["failure_time"]:
                     settling = worst["note"].startswith("while settling")
-                    note += f"\n{'settling ' if settling else ''}t={number(worst['failure_time']):.3g} s"
+                    note += f"\n{'settling' + chr(10) if settling else ''}t={number(worst['failure_time']):.3g} s"
                 elif worst["outcome"] == "invalid" and worst["note"]:
                     # The key the run was refused on, broken at its dots to fit the cell.
                     note += "\n" + worst["note"].split(":")[0].replace(".", ".\n")
