@@ -21,10 +21,16 @@
 namespace slide::cases {
 namespace {
 
+// rad: the orientation a body's scene states, a box's shape.angle; an outline given by its points is at angle 0.
+double placed_angle(const YAML::Node& bn) {
+  const YAML::Node sh = bn["shape"];
+  return sh["type"].as<std::string>() == "box" ? sh["angle"].as<double>() * M_PI / 180.0 : 0.0;
+}
+
 // Reads a prescribed-motion series: a CSV with a header naming at least time, x, y, angle (vx, vy, omega and body
 // optional), as bodies.csv has them.
 rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, const std::string& body,
-                                           const std::string& key) {
+                                           const std::string& key, double placed_angle) {
   CsvTable t;
   try {
     t = read_csv(file);
@@ -45,7 +51,7 @@ rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, co
       rigid::MotionSample m;
       m.time = std::stod(f.at(ct));
       m.state.position = rigid::Vec2(std::stod(f.at(cx)), std::stod(f.at(cy)));
-      m.state.angle = std::stod(f.at(ca));
+      m.state.angle = std::stod(f.at(ca)) - placed_angle;  // the series states absolute angles, as bodies.csv
       if (has_velocity) {
         m.state.velocity = rigid::Vec2(std::stod(f.at(cvx)), std::stod(f.at(cvy)));
         m.state.angular_velocity = std::stod(f.at(cw));
@@ -113,7 +119,8 @@ rigid::PrescribedMotion read_prescribed(const SceneBuild& b, const YAML::Node& b
   if (file.empty()) throw SceneError(path + ".prescribed.file", "a series needs a CSV file");
   const std::string name = bn["name"].as<std::string>();
   const std::string who = pr["body"].as<std::string>().empty() ? name : pr["body"].as<std::string>();
-  const auto m = read_motion_series(b.scene_dir / file, who, path + ".prescribed.file");
+  const double placed = placed_angle(bn);
+  const auto m = read_motion_series(b.scene_dir / file, who, path + ".prescribed.file", placed);
   const double end_time = b.r["end_time"].as<double>();
   if (m.first_time() > 1e-9 || m.last_time() < end_time - 1e-9)
     throw SceneError(path + ".prescribed.file",
@@ -123,8 +130,8 @@ rigid::PrescribedMotion read_prescribed(const SceneBuild& b, const YAML::Node& b
   if ((s0.position - c).norm() > 0.01 * b.dp || std::abs(s0.angle) > 1e-6)
     throw SceneError(path + ".prescribed.file",
                      fmt::format("the series starts at ({:.6g}, {:.6g}), angle {:.3g}, but the body's centre of "
-                                 "mass is at ({:.6g}, {:.6g}), angle 0",
-                                 s0.position[0], s0.position[1], s0.angle, c[0], c[1]));
+                                 "mass is at ({:.6g}, {:.6g}), angle {:.3g}",
+                                 s0.position[0], s0.position[1], s0.angle + placed, c[0], c[1], placed));
   return m;
 }
 
@@ -205,7 +212,7 @@ void add_rigid_body(SceneBuild& b, const YAML::Node& bn, const std::string& path
   const double area = rigid::signed_area(outline);
   const double density = spec.mass / area;
   const std::string name = bn["name"].as<std::string>();
-  const int body = b.bodies->add(name, spec, motion, density);
+  const int body = b.bodies->add(name, spec, motion, density, placed_angle(bn));
   const auto pts = body_boundary_points(outline, b.dp, boundary_layers(b.sim->options.re_over_dp));
   BodyReport rep;
   rep.name = name;
@@ -367,7 +374,7 @@ std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& p
   if (sh["type"].as<std::string>() == "box") {
     const Vec<2> c = vec2(sh["center"]), size = vec2(sh["size"]);
     if (!(size[0] > 0 && size[1] > 0)) throw SceneError(path + ".shape.size", "width and height must be positive");
-    const double a = sh["angle"].as<double>() * M_PI / 180.0, ca = std::cos(a), sa = std::sin(a);
+    const double a = placed_angle(bn), ca = std::cos(a), sa = std::sin(a);
     for (const auto& corner : {Vec<2>(-0.5, -0.5), Vec<2>(0.5, -0.5), Vec<2>(0.5, 0.5), Vec<2>(-0.5, 0.5)}) {
       const Vec<2> l(corner[0] * size[0], corner[1] * size[1]);
       outline.push_back(to_rigid(c + Vec<2>(ca * l[0] - sa * l[1], sa * l[0] + ca * l[1])));

@@ -12,9 +12,11 @@ double cross2(const Vec<2>& a, const Vec<2>& b) { return a[0] * b[1] - a[1] * b[
 Vec<2> rotate(const Vec<2>& v, double c, double s) { return Vec<2>(c * v[0] - s * v[1], s * v[0] + c * v[1]); }
 }  // namespace
 
-int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density) {
+int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density,
+                     double placed_angle_rad) {
   const int b = world.add_body(spec);
   names.push_back(name);
+  placed_angle.push_back(placed_angle_rad);
   motion.push_back(m);
   force.emplace_back();
   pending_.emplace_back();

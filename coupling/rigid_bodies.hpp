@@ -47,12 +47,18 @@ class RigidBodies {
   std::vector<BodyMotion> motion;
   std::vector<BodyFluidForce> force;  // of the last step
   std::vector<double> density;        // kg/m^3 (informative; mass is per unit width)
+  // rad: the orientation the scene placed the body at (a box's shape.angle; 0 for an outline given by its points).
+  // Bullet counts its angle from creation; bodies.csv and prescribed series state placed_angle + that.
+  std::vector<double> placed_angle;
 
-  int add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density);
+  int add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density,
+          double placed_angle_rad = 0.0);
   std::size_t size() const { return names.size(); }
 
   // Pose and velocity of body b now.
   rigid::PlanarState state(int b) const { return world.state(b); }
+  // Its angle as the scene states orientations: placed_angle + the rotation since creation, rad.
+  double absolute_angle(int b) const { return placed_angle[static_cast<std::size_t>(b)] + state(b).angle; }
 
   // Applies the poses at `time` (prescribed bodies) and sets every body particle's position, velocity, normal and
   // acceleration from its body's pose. The acceleration is the rigid field a = A + alpha x r - omega^2 r, with A

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "fluid/name_table.hpp"
 #include "fluid/vec.hpp"
 
 namespace slide {
@@ -14,6 +15,10 @@ enum class Kind : std::uint8_t {
   wall = 1,   // first boundary layer: carries pressure, is seen by the pressure gradient and viscosity
   dummy = 2,  // further boundary layers that complete the kernel support behind the wall
 };
+
+// The names of the kinds, as snapshots state them next to their codes.
+inline constexpr auto kind_names =
+    make_name_table<Kind>(std::pair{Kind::fluid, "fluid"}, std::pair{Kind::wall, "wall"}, std::pair{Kind::dummy, "dummy"});
 
 template <int D>
 struct Particles {

@@ -127,6 +127,16 @@ T read_root_attribute(hid_t file, const std::string& path, const char* name, hid
   return value;
 }
 
+std::string read_string_attribute(hid_t file, const std::string& object, const char* name) {
+  H5Closer attr{H5Aopen_by_name(file, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  EXPECT_GE(attr.id, 0) << object << " " << name;
+  if (attr.id < 0) return {};
+  H5Closer type{H5Aget_type(attr.id), H5Tclose};
+  std::string value(H5Tget_size(type.id), '\0');
+  EXPECT_GE(H5Aread(attr.id, type.id, value.data()), 0);
+  return value.substr(0, value.find('\0'));
+}
+
 void expect_snapshot(hid_t master, size_t index, const Snap& s, double time, long step) {
   const std::string base = "snapshots/" + SnapshotWriter::snapshot_name(index);
   const size_t n = s.pressure.size();
@@ -150,6 +160,9 @@ void expect_snapshot(hid_t master, size_t index, const Snap& s, double time, lon
   EXPECT_EQ(read_dataset<uint8_t>(master, base + "/phase", H5T_NATIVE_UINT8), s.phase);
   EXPECT_EQ(read_dataset<uint8_t>(master, base + "/kind", H5T_NATIVE_UINT8), s.kind);
   EXPECT_EQ(read_dataset<uint32_t>(master, base + "/id", H5T_NATIVE_UINT32), s.id);
+  std::vector<uint32_t> cells(n);
+  for (size_t i = 0; i < n; ++i) cells[i] = static_cast<uint32_t>(i);
+  EXPECT_EQ(read_dataset<uint32_t>(master, base + "/connectivity", H5T_NATIVE_UINT32), cells);
   EXPECT_EQ(read_root_attribute<double>(master, base, "time", H5T_NATIVE_DOUBLE), time);
   EXPECT_EQ(read_root_attribute<int64_t>(master, base, "step", H5T_NATIVE_INT64), step);
   EXPECT_EQ(read_root_attribute<int32_t>(master, base, "dim", H5T_NATIVE_INT32), s.dim);
@@ -239,7 +252,7 @@ TEST(SnapshotWriter, WritesSnapshotsReadableThroughMasterLinks) {
   const Snap s0 = make_snap(2, 5, 0.25);
   const Snap s1 = make_snap(2, 4, 1.75);
   {
-    SnapshotWriter w(dir.path);
+    SnapshotWriter w(dir.path, {"0 fluid, 1 wall, 2 dummy", "0 water, 1 sediment", "slide test"});
     EXPECT_EQ(w.count(), 0u);
     w.write(0.0, 0, s0.fields());
     EXPECT_EQ(w.count(), 1u);
@@ -277,6 +290,26 @@ TEST(SnapshotWriter, WritesSnapshotsReadableThroughMasterLinks) {
   EXPECT_NE(xdmf.find("NumberType=\"UInt\""), std::string::npos);
   EXPECT_EQ(count_occurrences(xdmf, "<Attribute "), 14u);
   EXPECT_EQ(count_occurrences(xdmf, "</Attribute>"), 14u);
+  // ParaView's default (Xdmf3) reader makes cells only from a topology's connectivity: one per particle.
+  EXPECT_EQ(count_occurrences(xdmf, "</Topology>"), 2u);
+  EXPECT_NE(xdmf.find("<DataItem Dimensions=\"5\" NumberType=\"UInt\" Precision=\"4\" Format=\"HDF\">"
+                      "snapshots/snapshot_000000.h5:/connectivity</DataItem>"),
+            std::string::npos);
+  EXPECT_NE(xdmf.find("snapshots/snapshot_000001.h5:/connectivity"), std::string::npos);
+  // Units and codes: for the geometry and each of the 7 attributes, per snapshot.
+  EXPECT_EQ(count_occurrences(xdmf, "<Information Name=\"units\""), 16u);
+  EXPECT_EQ(count_occurrences(xdmf, "<Information Name=\"units\" Value=\"Pa\"/>"), 2u);
+  EXPECT_EQ(count_occurrences(xdmf, "<Information Name=\"codes\" Value=\"0 water, 1 sediment\"/>"), 2u);
+  EXPECT_EQ(count_occurrences(xdmf, "<Information Name=\"codes\" Value=\"0 fluid, 1 wall, 2 dummy\"/>"), 2u);
+
+  // The same in the HDF5 files, as attributes.
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001/position", "units"), "m");
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001/velocity", "units"), "m/s");
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001/pressure", "units"), "Pa");
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001/density", "units"), "kg/m^3");
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001/kind", "codes"), "0 fluid, 1 wall, 2 dummy");
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001/phase", "codes"), "0 water, 1 sediment");
+  EXPECT_EQ(read_string_attribute(master.id, "snapshots/000001", "code"), "slide test");
 }
 
 TEST(SnapshotWriter, ThreeDimensionalAndEmpty) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "coupling/free_surface_gauge.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/slide_front.hpp"
@@ -43,11 +45,22 @@ double next_after(double next, double interval, double now) {
   return now >= next ? now + interval : next;
 }
 
+// "0 fluid, 1 wall, 2 dummy" and "0 water, 1 sediment": what the snapshots' codes stand for.
+SnapshotLegend snapshot_legend(const Simulation<2>& sim) {
+  SnapshotLegend legend;
+  for (const auto& [kind, name] : kind_names.entries)
+    legend.kind_codes += fmt::format("{}{} {}", legend.kind_codes.empty() ? "" : ", ", static_cast<int>(kind), name);
+  for (std::size_t k = 0; k < sim.phases.size(); ++k)
+    legend.phase_codes += fmt::format("{}{} {}", k == 0 ? "" : ", ", k, sim.phases[k].name);
+  legend.code = fmt::format("slide {}", SLIDE_VERSION);
+  return legend;
+}
+
 }  // namespace
 
 RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& out)
     : scene_(scene), sim_(*scene.simulation) {
-  if (scene.output.snapshots) snapshots_.emplace(out);
+  if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_));
   if (sim_.bodies())
     bodies_.emplace(out / "bodies.csv",
                     std::vector<std::string>{"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
@@ -116,7 +129,7 @@ void RunOutputs::sample_bodies() {
     const auto s = bodies->state(int(b));
     const auto& f = mean[b].fluid;
     const auto& c = mean[b].contact;
-    const double row[] = {s.position[0], s.position[1], s.angle, s.velocity[0], s.velocity[1],
+    const double row[] = {s.position[0], s.position[1], bodies->absolute_angle(int(b)), s.velocity[0], s.velocity[1],
                           s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
                           f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
     bodies_->add_labelled_row(sim_.time(), bodies->names[b], row);

@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -110,6 +111,24 @@ void write_scalar_attribute(hid_t obj, const std::filesystem::path& path, const 
   check(attr.close(), path, fmt::format("cannot close attribute {}", name));
 }
 
+// A fixed-length, null-terminated ASCII string attribute (h5py reads it as bytes, ParaView and h5dump as text).
+void write_string_attribute(hid_t obj, const std::filesystem::path& path, const char* name, const std::string& value) {
+  H5Handle type = check(H5Tcopy(H5T_C_S1), H5Tclose, path, "cannot copy string type");
+  check(H5Tset_size(type.get(), std::max<size_t>(1, value.size() + 1)), path, "cannot size string type");
+  check(H5Tset_strpad(type.get(), H5T_STR_NULLTERM), path, "cannot pad string type");
+  H5Handle space = check(H5Screate(H5S_SCALAR), H5Sclose, path, "cannot create dataspace");
+  H5Handle attr = check(H5Acreate2(obj, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, path,
+                        fmt::format("cannot create attribute {}", name));
+  check(H5Awrite(attr.get(), type.get(), value.c_str()), path, fmt::format("cannot write attribute {}", name));
+  check(attr.close(), path, fmt::format("cannot close attribute {}", name));
+}
+
+void write_dataset_attribute(hid_t file, const std::filesystem::path& path, const char* dataset, const char* name,
+                             const std::string& value) {
+  H5Handle ds = check(H5Dopen2(file, dataset, H5P_DEFAULT), H5Dclose, path, fmt::format("cannot open /{}", dataset));
+  write_string_attribute(ds.get(), path, name, value);
+}
+
 void check_size(std::string_view name, size_t got, size_t expected) {
   if (got != expected) {
     throw std::invalid_argument(fmt::format(
@@ -119,6 +138,37 @@ void check_size(std::string_view name, size_t got, size_t expected) {
 
 std::string fmt_double(double v) { return fmt::format("{:.17g}", v); }
 
+// Each dataset of a snapshot after /position, as the XDMF names it: its attribute type, number type and unit.
+struct FieldSpec {
+  const char* name;
+  const char* xdmf_type;  // Vector or Scalar
+  const char* number_type;
+  int precision;
+  const char* units;
+};
+constexpr FieldSpec kPositionSpec{"position", "Vector", "Float", 8, "m"};
+constexpr FieldSpec kFieldSpecs[] = {
+    {"velocity", "Vector", "Float", 8, "m/s"},    {"pressure", "Scalar", "Float", 8, "Pa"},
+    {"number_density", "Scalar", "Float", 8, "1"},  // the MPS sum of kernel weights (seed paper, eq. 2)
+    {"density", "Scalar", "Float", 8, "kg/m^3"},  {"phase", "Scalar", "UChar", 1, "1"},
+    {"kind", "Scalar", "UChar", 1, "1"},          {"id", "Scalar", "UInt", 4, "1"},
+};
+
+// Text safe inside an XML attribute value.
+std::string xml_escaped(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string SnapshotWriter::snapshot_name(size_t index) { return fmt::format("{:06d}", index); }
@@ -127,7 +177,8 @@ std::string SnapshotWriter::snapshot_relative_path(size_t index) {
   return fmt::format("snapshots/snapshot_{:06d}.h5", index);
 }
 
-SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {
+SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend)
+    : out_dir_(std::move(out_dir)), legend_(std::move(legend)) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / "snapshots", ec);
   if (ec) {
@@ -200,6 +251,15 @@ void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path
     write_dataset(fid, tmp, "phase", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.phase.data(), n);
     write_dataset(fid, tmp, "kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.kind.data(), n);
     write_dataset(fid, tmp, "id", H5T_STD_U32LE, H5T_NATIVE_UINT32, f.id.data(), n);
+    std::vector<uint32_t> connectivity(n);
+    for (size_t i = 0; i < n; ++i) connectivity[i] = static_cast<uint32_t>(i);
+    write_dataset(fid, tmp, "connectivity", H5T_STD_U32LE, H5T_NATIVE_UINT32, connectivity.data(), n);
+
+    write_dataset_attribute(fid, tmp, kPositionSpec.name, "units", kPositionSpec.units);
+    for (const FieldSpec& spec : kFieldSpecs) write_dataset_attribute(fid, tmp, spec.name, "units", spec.units);
+    if (!legend_.kind_codes.empty()) write_dataset_attribute(fid, tmp, "kind", "codes", legend_.kind_codes);
+    if (!legend_.phase_codes.empty()) write_dataset_attribute(fid, tmp, "phase", "codes", legend_.phase_codes);
+    if (!legend_.code.empty()) write_string_attribute(fid, tmp, "code", legend_.code);
 
     const int64_t step64 = step;
     const int32_t dim32 = f.dim;
@@ -262,32 +322,35 @@ void SnapshotWriter::write_xdmf() const {
                    snapshot_name(i));
     fmt::format_to(out, "        <Time Value=\"{}\"/>\n", fmt_double(e.time));
     fmt::format_to(out,
-                   "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" "
-                   "NodesPerElement=\"1\"/>\n",
-                   e.n);
+                   "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{0}\" NodesPerElement=\"1\">\n"
+                   "          <DataItem Dimensions=\"{0}\" NumberType=\"UInt\" Precision=\"4\" "
+                   "Format=\"HDF\">{1}:/connectivity</DataItem>\n"
+                   "        </Topology>\n",
+                   e.n, file);
     fmt::format_to(out,
                    "        <Geometry GeometryType=\"XYZ\">\n"
-                   "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
-                   "Format=\"HDF\">{}:/position</DataItem>\n"
+                   "          <Information Name=\"units\" Value=\"{2}\"/>\n"
+                   "          <DataItem Dimensions=\"{0} 3\" NumberType=\"Float\" Precision=\"8\" "
+                   "Format=\"HDF\">{1}:/position</DataItem>\n"
                    "        </Geometry>\n",
-                   e.n, file);
-    auto attribute = [&](const char* name, const char* type, const char* number_type,
-                         int precision, bool vector) {
-      const std::string dims = vector ? fmt::format("{} 3", e.n) : fmt::format("{}", e.n);
+                   e.n, file, kPositionSpec.units);
+    for (const FieldSpec& spec : kFieldSpecs) {
+      const std::string dims =
+          std::string_view(spec.xdmf_type) == "Vector" ? fmt::format("{} 3", e.n) : fmt::format("{}", e.n);
+      fmt::format_to(out, "        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n", spec.name,
+                     spec.xdmf_type);
+      fmt::format_to(out, "          <Information Name=\"units\" Value=\"{}\"/>\n", spec.units);
+      const std::string& codes = std::string_view(spec.name) == "kind"    ? legend_.kind_codes
+                                 : std::string_view(spec.name) == "phase" ? legend_.phase_codes
+                                                                          : std::string();
+      if (!codes.empty())
+        fmt::format_to(out, "          <Information Name=\"codes\" Value=\"{}\"/>\n", xml_escaped(codes));
       fmt::format_to(out,
-                     "        <Attribute Name=\"{0}\" AttributeType=\"{1}\" Center=\"Node\">\n"
-                     "          <DataItem Dimensions=\"{2}\" NumberType=\"{3}\" "
-                     "Precision=\"{4}\" Format=\"HDF\">{5}:/{0}</DataItem>\n"
+                     "          <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" "
+                     "Format=\"HDF\">{}:/{}</DataItem>\n"
                      "        </Attribute>\n",
-                     name, type, dims, number_type, precision, file);
-    };
-    attribute("velocity", "Vector", "Float", 8, true);
-    attribute("pressure", "Scalar", "Float", 8, false);
-    attribute("number_density", "Scalar", "Float", 8, false);
-    attribute("density", "Scalar", "Float", 8, false);
-    attribute("phase", "Scalar", "UChar", 1, false);
-    attribute("kind", "Scalar", "UChar", 1, false);
-    attribute("id", "Scalar", "UInt", 4, false);
+                     dims, spec.number_type, spec.precision, file, spec.name);
+    }
     x += "      </Grid>\n";
   }
   x += "    </Grid>\n";

@@ -6,8 +6,11 @@
 //   snapshots/snapshot_000000.h5, snapshot_000001.h5, ...   one file per snapshot, each written
 //       under a temporary name, closed, fsync()ed and renamed. Datasets (n particles):
 //       /position, /velocity  float64 n x 3 (z = 0 in 2-D), /pressure, /number_density, /density
-//       float64 n, /phase, /kind uint8 n, /id uint32 n; root attributes time (float64),
-//       step (int64), dim (int32).
+//       float64 n, /phase, /kind uint8 n, /id uint32 n, /connectivity uint32 n (0 .. n-1: the
+//       Polyvertex cells, one per particle, that ParaView's Xdmf3 reader needs to show points);
+//       root attributes time (float64), step (int64), dim (int32), code; each dataset has a string
+//       attribute units (SI; "1" for a count or code), /phase and /kind one named codes
+//       ("0 fluid, 1 wall, 2 dummy").
 //   particles.h5    master file (re-created atomically after every snapshot): group /snapshots
 //       with one external link per snapshot, named by the 6-digit index, pointing at
 //       "snapshots/snapshot_XXXXXX.h5" object "/"; datasets /times (float64) and /steps (int64).
@@ -15,7 +18,8 @@
 //       of particles.h5, so h5py.File('.../particles.h5')['snapshots/000003/pressure'] works from
 //       any working directory.
 //   particles.xdmf  XDMF 3 temporal collection of Polyvertex grids (re-created atomically),
-//       referencing the snapshot files by relative path: open it in ParaView.
+//       referencing the snapshot files by relative path: open it in ParaView (either Xdmf reader).
+//       Units and codes appear there too, as <Information> elements.
 //
 // Constructing a SnapshotWriter starts a new series: snapshot files left in out_dir/snapshots by
 // a previous run (snapshot_*.h5 and stale temporaries) are removed.
@@ -36,10 +40,17 @@ struct SnapshotFields {  // one snapshot; n particles (n = pressure.size())
   std::span<const uint32_t> id;          // n; particle id (stable across snapshots)
 };
 
+// What the codes in /kind and /phase stand for, and who wrote the files, stored with every snapshot.
+struct SnapshotLegend {
+  std::string kind_codes;   // e.g. "0 fluid, 1 wall, 2 dummy"
+  std::string phase_codes;  // e.g. "0 water, 1 sediment"
+  std::string code;         // the program and its version, e.g. "slide 0.14"
+};
+
 class SnapshotWriter {
  public:
   // Creates out_dir and out_dir/snapshots if needed.
-  explicit SnapshotWriter(std::filesystem::path out_dir);
+  explicit SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend = {});
 
   // Appends one snapshot: writes its file, then re-creates particles.h5 and particles.xdmf.
   // Throws std::invalid_argument on inconsistent span sizes or dim, std::runtime_error (naming
@@ -68,6 +79,7 @@ class SnapshotWriter {
   void write_xdmf() const;
 
   std::filesystem::path out_dir_;
+  SnapshotLegend legend_;
   std::vector<Entry> entries_;
 };
 
