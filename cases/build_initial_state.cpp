@@ -12,6 +12,7 @@
 #include "coupling/equilibrium_column.hpp"
 #include "coupling/relaxation.hpp"
 #include "fluid/hydrostatic_start.hpp"
+#include "fluid/walls.hpp"
 
 namespace slide::cases {
 namespace {
@@ -80,7 +81,8 @@ void start_hydrostatic(SceneBuild& b) {
 }
 
 // The scene's domain, or the particles' bounding box as placed enlarged by 4 re on every side and by half its
-// height upwards.
+// height upwards. A fluid particle that leaves it through an open side is taken out of the run; the walls' faces,
+// as thick as their particle layers, tell one that went through a wall (fluid/wall_crossing.hpp).
 void set_domain(SceneBuild& b) {
   FluidOptions<2>& opt = b.options();
   const Particles<2>& P = b.particles();
@@ -88,16 +90,20 @@ void set_domain(SceneBuild& b) {
   if (!b.r["domain"]) {
     opt.domain_lo = b.lo - Vec<2>::Constant(4 * re);
     opt.domain_hi = b.hi + Vec<2>::Constant(4 * re) + Vec<2>(0.0, 0.5 * (b.hi[1] - b.lo[1]));
-    return;
+  } else {
+    opt.domain_lo = vec2(b.r["domain"]["min"]);
+    opt.domain_hi = vec2(b.r["domain"]["max"]);
+    for (std::size_t i = 0; i < P.size(); ++i)
+      for (int k = 0; k < 2; ++k)
+        if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
+          throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
+                                                 P.position[i][0], P.position[i][1]));
+    opt.periodic_x = b.period_x;
   }
-  opt.domain_lo = vec2(b.r["domain"]["min"]);
-  opt.domain_hi = vec2(b.r["domain"]["max"]);
-  for (std::size_t i = 0; i < P.size(); ++i)
-    for (int k = 0; k < 2; ++k)
-      if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
-        throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
-                                               P.position[i][0], P.position[i][1]));
-  opt.periodic_x = b.period_x;
+  std::vector<WallFace> faces;
+  for (const auto& f : b.faces) faces.push_back({f.a, f.b, f.inward});
+  b.sim->wall_crossing =
+      WallCrossing(std::move(faces), boundary_layers(opt.re_over_dp) * b.dp, opt.domain_lo, opt.domain_hi, re);
 }
 
 void count_particles(SceneBuild& b) {

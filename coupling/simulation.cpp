@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "fluid/artificial_viscosity.hpp"
 #include "fluid/basal_friction.hpp"
 #include "fluid/collision.hpp"
@@ -215,6 +217,9 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
 template <int D>
 std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   update_neighbors(false);
+  const bool walls_checked = D == 2 && !wall_crossing.empty();
+  if (walls_checked) position_at_step_start_.assign(particles.position.begin(),
+                                                    particles.position.begin() + particles.real_count());
   update_viscosity();
   predict_with_viscosity_and_gravity(dt);
   compute_pressure();  // at the predicted positions
@@ -224,8 +229,68 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   time_ += dt;
   ++step_count_;
   ++limit_counts_[static_cast<int>(limit)];
+  if (walls_checked)
+    if (auto crossing = find_wall_crossing()) return crossing;
+  remove_particles_that_left();
   record_largest_compression();
   return check();
+}
+
+template <int D>
+std::optional<Instability> Simulation<D>::find_wall_crossing() const {
+  if constexpr (D != 2) {
+    return std::nullopt;
+  } else {
+    const auto& P = particles;
+    const std::size_t n = std::min(P.real_count(), position_at_step_start_.size());
+    auto face_crossed = [&](std::size_t i) {
+      return P.kind[i] == Kind::fluid ? wall_crossing.crossed(position_at_step_start_[i], P.position[i]) : -1;
+    };
+    if (parallel_max(n, 0.0, [&](std::size_t i) { return face_crossed(i) >= 0 ? 1.0 : 0.0; }) == 0.0)
+      return std::nullopt;
+    std::size_t pick = n;  // the lowest id, whatever the thread count
+    for (std::size_t i = 0; i < n; ++i)
+      if (face_crossed(i) >= 0 && (pick == n || P.id[i] < P.id[pick])) pick = i;
+    const WallFace& f = wall_crossing.face(face_crossed(pick));
+    Instability s;
+    s.time = time_;
+    s.step = step_count_;
+    s.particle = P.id[pick];
+    s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
+    s.reason = fmt::format(
+        "passed through a wall: it moved from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g}) in one step, past the back of the "
+        "wall face ({:.6g}, {:.6g}) - ({:.6g}, {:.6g})",
+        position_at_step_start_[pick][0], position_at_step_start_[pick][1], P.position[pick][0], P.position[pick][1],
+        f.a[0], f.a[1], f.b[0], f.b[1]);
+    return s;
+  }
+}
+
+// Fluid particles outside the domain's bounds left through an open side (find_wall_crossing has caught those that
+// went through a wall): they are recorded and taken out, and the neighbour list is built afresh without them.
+// Non-finite positions stay for check() to report.
+template <int D>
+void Simulation<D>::remove_particles_that_left() {
+  auto& P = particles;
+  const std::size_t n = P.real_count();
+  const int first_bounded = options.periodic_x ? 1 : 0;
+  auto outside = [&](std::size_t i) {
+    const auto& x = P.position[i];
+    if (P.kind[i] != Kind::fluid || !x.allFinite()) return false;
+    for (int k = first_bounded; k < D; ++k)
+      if (x[k] < options.domain_lo[k] || x[k] > options.domain_hi[k]) return true;
+    return false;
+  };
+  if (parallel_max(n, 0.0, [&](std::size_t i) { return outside(i) ? 1.0 : 0.0; }) == 0.0) return;
+  std::vector<std::size_t> leaving;
+  for (std::size_t i = 0; i < n; ++i)
+    if (outside(i)) leaving.push_back(i);
+  std::sort(leaving.begin(), leaving.end(), [&](std::size_t a, std::size_t b) { return P.id[a] < P.id[b]; });
+  for (const std::size_t i : leaving)
+    left_the_domain_.push_back({P.id[i], time_, std::vector<double>(P.position[i].data(), P.position[i].data() + D)});
+  if (options.periodic_x) remove_ghosts(P);
+  P.remove_keeping_ids([&](std::size_t i) { return i < n && outside(i); });
+  update_neighbors(true);
 }
 
 template <int D>

@@ -25,6 +25,7 @@
 #include "fluid/particles.hpp"
 #include "fluid/phase.hpp"
 #include "fluid/viscosity.hpp"
+#include "fluid/wall_crossing.hpp"
 
 namespace slide {
 
@@ -37,6 +38,13 @@ struct ViscousSolveStats {
   int most_iterations = 0;  // in one solve
   double largest_residual = 0.0;
   long unconverged = 0;     // solves that stopped at the iteration cap
+};
+
+// A fluid particle taken out of the run: it left the domain's bounds through an open side (fluid/wall_crossing.hpp).
+struct LeftParticle {
+  std::uint32_t id = 0;
+  double time = 0.0;                // s, the end of the step it left in
+  std::vector<double> position;     // where it was then, m
 };
 
 struct Instability {
@@ -70,6 +78,13 @@ class Simulation {
   double largest_number_density_ratio() const { return largest_number_density_ratio_; }
   double largest_number_density_ratio_time() const { return largest_number_density_ratio_time_; }
 
+  // The fixed walls' faces, for telling a particle that passed through a wall from one that left through an open side
+  // (fluid/wall_crossing.hpp). 2-D only; empty: no wall is checked, and every particle leaving the domain is removed.
+  WallCrossing wall_crossing;
+  // The fluid particles taken out of the run because they left the domain, in the order they left (by id within a
+  // step).
+  const std::vector<LeftParticle>& left_the_domain() const { return left_the_domain_; }
+
   // Rigid bodies two-way coupled with the fluid; null when the scene has none. 2-D only.
   const std::shared_ptr<RigidBodies>& bodies() const { return bodies_; }
   void attach_bodies(std::shared_ptr<RigidBodies> bodies) { bodies_ = std::move(bodies); }
@@ -100,6 +115,8 @@ class Simulation {
 
   // Checks the current state: non-finite values, particles out of the domain, number-density collapse, speed.
   std::optional<Instability> check() const;
+  // The fluid particle of lowest id whose move since the start of this step went through a wall, if any.
+  std::optional<Instability> find_wall_crossing() const;
 
   const NeighborList& neighbors() const { return list_; }
   const NeighborGrid<D>& grid() const { return grid_; }
@@ -121,6 +138,7 @@ class Simulation {
   void correct_with_pressure_gradient(double dt);
   void collide(double dt);
   void move_bodies(double dt);
+  void remove_particles_that_left();
 
   double particle_volume() const { return std::pow(options.dp, D); }  // per unit width in 2-D
   double list_radius() const { return re() + options.skin_over_dp * options.dp; }
@@ -136,6 +154,8 @@ class Simulation {
   NeighborGrid<D> grid_;
   NeighborList list_;
   std::vector<Vec<D>> position_at_build_;
+  std::vector<Vec<D>> position_at_step_start_;  // for find_wall_crossing; filled only when there are wall faces
+  std::vector<LeftParticle> left_the_domain_;
   std::vector<Vec<D>> scratch_;
   std::vector<Vec<D>> predictor_acceleration_;  // semi-implicit viscous stage: a - grad p / rho given to the solve
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step

@@ -52,11 +52,15 @@ struct Particles {
 
   // Periodic ghosts (fluid/periodic.hpp). The arrays above hold the real particles first, then ghost_source.size()
   // ghosts: ghost g, at index real_count() + g, is an image of real particle ghost_source[g], equal to it in every
-  // array except that its position is shifted by ghost_shift[g] along x and its id is real_count() + g (real ids
-  // are creation indices, 0 .. real_count() - 1, so they never collide). Removing the ghosts truncates the arrays.
+  // array except that its position is shifted by ghost_shift[g] along x and its id is id_end() + g (real ids
+  // are creation indices below id_end(), so they never collide). Removing the ghosts truncates the arrays.
   // Without periodic boundaries there are none and real_count() == size().
   std::vector<std::uint32_t> ghost_source;
   std::vector<double> ghost_shift;
+  // Particles taken out of a run (remove_keeping_ids: they left the domain) since the ids were last made dense. The
+  // real ids lie in 0 .. real_count() + removed_count - 1, so ghosts take ids from there on.
+  std::size_t removed_count = 0;
+  std::size_t id_end() const { return real_count() + removed_count; }
 
   std::size_t size() const { return position.size(); }
   std::size_t ghost_count() const { return ghost_source.size(); }
@@ -121,6 +125,21 @@ struct Particles {
   }
 
   // Removes every particle for which drop(i) holds (real particles only: no ghosts may be present), keeping the
+  // others in their order and their ids (a particle's id names it in every snapshot of a run).
+  template <class Drop>
+  void remove_keeping_ids(Drop drop) {
+    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_keeping_ids with periodic ghosts present");
+    std::vector<std::uint32_t> keep;
+    for (std::size_t i = 0; i < size(); ++i)
+      if (!drop(i)) keep.push_back(static_cast<std::uint32_t>(i));
+    removed_count += size() - keep.size();
+    for_each_array([&](auto& v) {
+      permute(v, keep);
+      v.resize(keep.size());
+    });
+  }
+
+  // Removes every particle for which drop(i) holds (real particles only: no ghosts may be present), keeping the
   // others in their order, and renumbers the ids 0 .. size() - 1 in their former order, so ids stay creation ranks.
   template <class Drop>
   void remove_if(Drop drop) {
@@ -136,6 +155,7 @@ struct Particles {
     for (std::uint32_t i = 0; i < by_id.size(); ++i) by_id[i] = i;
     std::sort(by_id.begin(), by_id.end(), [&](std::uint32_t a, std::uint32_t b) { return id[a] < id[b]; });
     for (std::uint32_t rank = 0; rank < by_id.size(); ++rank) id[by_id[rank]] = rank;
+    removed_count = 0;
   }
 
   template <class T>

@@ -58,12 +58,12 @@ void remove_ghosts(Particles<D>& P) {
 // Copies every array of each ghost's source into the ghost, then shifts its x and gives it its own id.
 template <int D>
 void sync_ghosts(Particles<D>& P) {
-  const std::size_t r = P.real_count();
+  const std::size_t r = P.real_count(), first_ghost_id = P.id_end();
   parallel_for(P.ghost_count(), [&](std::size_t g) {
     const std::size_t s = P.ghost_source[g], t = r + g;
     P.for_each_array([&](auto& v) { v[t] = v[s]; });
     P.position[t][0] += P.ghost_shift[g];
-    P.id[t] = static_cast<std::uint32_t>(t);
+    P.id[t] = static_cast<std::uint32_t>(first_ghost_id + g);
   });
 }
 

@@ -160,8 +160,10 @@ class ProgressLine : public StepObserver<2> {
     const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
     const double rate = double(sim.particles.real_count()) * sim.step_count() / wall;
     const double eta = wall / sim.time() * (end_ - sim.time());
-    std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s   ",
-                             sim.time(), end_, dt, rate / 1e6, eta)
+    const std::size_t left = sim.left_the_domain().size();
+    std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s{}   ",
+                             sim.time(), end_, dt, rate / 1e6, eta,
+                             left ? fmt::format("  {} left the domain", left) : std::string())
               << std::flush;
   }
 
@@ -169,6 +171,27 @@ class ProgressLine : public StepObserver<2> {
   Clock::time_point start_, next_ = Clock::now() + std::chrono::seconds(1);
   double end_;
 };
+
+// run.json's account of the particles taken out of the run (Simulation::left_the_domain): how many, and the first
+// hundred with when and where.
+json left_the_domain_json(const Simulation<2>& sim) {
+  const auto& left = sim.left_the_domain();
+  json listed = json::array();
+  for (std::size_t k = 0; k < std::min<std::size_t>(left.size(), 100); ++k)
+    listed.push_back({{"id", left[k].id}, {"time", left[k].time}, {"position", left[k].position}});
+  return {{"count", left.size()}, {"first", listed}};
+}
+
+// The completed message's note of them, empty when none left.
+std::string left_the_domain_note(const Simulation<2>& sim) {
+  const auto& left = sim.left_the_domain();
+  if (left.empty()) return "";
+  const auto& first = left.front();
+  return fmt::format("; {} fluid particle{} left the domain through an open side and {} taken out (the first, {}, "
+                     "at t = {:.6g} s at ({:.6g}, {:.6g}); run.json lists them)",
+                     left.size(), left.size() == 1 ? "" : "s", left.size() == 1 ? "was" : "were", first.id,
+                     first.time, first.position[0], first.position[1]);
+}
 
 }  // namespace
 
@@ -241,6 +264,7 @@ int run_command(const RunArguments& args) {
     j["loop_cpu_seconds"] = process_cpu_seconds() - cpu_at_loop_start;
     j["particle_steps_per_second"] = wall > 0 ? particle_steps / wall : 0.0;
     j["snapshots"] = outputs.snapshot_count();
+    j["left_the_domain"] = left_the_domain_json(sim);
     j["scene"] = to_json(scene->resolved);
     for (auto it = extra.begin(); it != extra.end(); ++it) j[it.key()] = it.value();
     write_file_atomically(out / "run.json", j.dump(2) + "\n");
@@ -294,7 +318,7 @@ int run_command(const RunArguments& args) {
     const std::string msg = fmt::format(
         "completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",
         sim.time(), sim.step_count(), wall, double(sim.particles.real_count()) * sim.step_count() / wall / 1e6,
-        limit_summary(sim.limit_counts()));
+        limit_summary(sim.limit_counts())) + left_the_domain_note(sim);
     write_run_json("completed", msg, json::object());
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\rslide: " << msg << "\n";
     return 0;

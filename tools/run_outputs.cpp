@@ -1,6 +1,7 @@
 #include "tools/run_outputs.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -14,26 +15,28 @@ namespace slide::tools {
 
 IdOrdered::IdOrdered(const Particles<2>& P) {
   const std::size_t n = P.real_count();  // periodic ghosts are images, not particles of their own
-  position.resize(2 * n);
-  velocity.resize(2 * n);
-  pressure.resize(n);
-  number_density.resize(n);
-  density.resize(n);
-  phase.resize(n);
-  kind.resize(n);
-  id.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t k = P.id[i];
+  // By id; ids have gaps where particles left the domain (Particles::remove_keeping_ids).
+  std::vector<std::uint32_t> index_of_id(P.id_end(), std::numeric_limits<std::uint32_t>::max());
+  for (std::size_t i = 0; i < n; ++i) index_of_id[P.id[i]] = static_cast<std::uint32_t>(i);
+  position.reserve(2 * n);
+  velocity.reserve(2 * n);
+  for (auto* v : {&pressure, &number_density, &density}) v->reserve(n);
+  phase.reserve(n);
+  kind.reserve(n);
+  id.reserve(n);
+  for (std::uint32_t k = 0; k < index_of_id.size(); ++k) {
+    const std::uint32_t i = index_of_id[k];
+    if (i == std::numeric_limits<std::uint32_t>::max()) continue;
     for (int d = 0; d < 2; ++d) {
-      position[2 * k + d] = P.position[i][d];
-      velocity[2 * k + d] = P.velocity[i][d];
+      position.push_back(P.position[i][d]);
+      velocity.push_back(P.velocity[i][d]);
     }
-    pressure[k] = P.pressure[i];
-    number_density[k] = P.number_density[i];
-    density[k] = P.density[i];
-    phase[k] = P.phase[i];
-    kind[k] = static_cast<std::uint8_t>(P.kind[i]);
-    id[k] = k;
+    pressure.push_back(P.pressure[i]);
+    number_density.push_back(P.number_density[i]);
+    density.push_back(P.density[i]);
+    phase.push_back(P.phase[i]);
+    kind.push_back(static_cast<std::uint8_t>(P.kind[i]));
+    id.push_back(k);
   }
 }
 

@@ -14,7 +14,7 @@
 namespace slide::tools {
 
 // Particle data copied in id order, the order every snapshot uses: the real particles only (periodic ghosts,
-// fluid/periodic.hpp, are left out), whose ids are 0 .. real_count() - 1.
+// fluid/periodic.hpp, are left out), whose ids are below id_end(), with gaps where particles left the domain.
 struct IdOrdered {
   std::vector<double> position, velocity, pressure, number_density, density;
   std::vector<std::uint8_t> phase, kind;
