@@ -40,7 +40,8 @@ ProfileSpec read_profiles(const YAML::Node& pn, double dp) {
 }
 
 OutputSpec read_output(const YAML::Node& on) {
-  return {on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>()};
+  return {on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>(),
+          on["checkpoint_interval"].as<double>()};
 }
 
 }  // namespace

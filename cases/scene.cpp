@@ -33,7 +33,7 @@ YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::
 }
 
 std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name,
-                                   const std::filesystem::path& scene_dir) {
+                                   const std::filesystem::path& scene_dir, bool for_resume) {
   SceneBuild b(r, scene_dir);
   b.scene->resolved = r;
   b.scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
@@ -60,7 +60,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   } catch (const std::invalid_argument& e) {  // what the solver refuses: a periodic domain's set-up
     throw SceneError("domain.periodic_x", e.what());
   }
-  settle(b);
+  if (!for_resume) settle(b);
   lift_gates(b);
 
   b.scene->simulation = std::move(b.sim);

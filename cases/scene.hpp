@@ -46,6 +46,7 @@ struct OutputSpec {
   bool snapshots = true;
   double snapshot_interval = 0.0;  // s; 0 = first and last only
   double gauge_interval = 0.0;     // s
+  double checkpoint_interval = 0.0;  // s of simulated time between checkpoints (tools/checkpoint.hpp); 0 = none
 };
 
 // What `slide check` reports about a body: mass and inertia from the outline beside the same sums over a dp
@@ -122,7 +123,8 @@ YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::
 // Builds particles and options from a resolved scene. Throws SceneError for geometric problems (a region that
 // holds no particle, water overlapping a wall).
 // scene_dir: where files named by the scene (prescribed motion series) are looked up.
+// for_resume: a run that continues from a checkpoint, which holds the settled state: the water is not settled again.
 std::unique_ptr<Scene> build_scene(const YAML::Node& resolved, const std::string& default_name,
-                                   const std::filesystem::path& scene_dir = ".");
+                                   const std::filesystem::path& scene_dir = ".", bool for_resume = false);
 
 }  // namespace slide::cases

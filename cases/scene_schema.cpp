@@ -233,7 +233,11 @@ Schema output_schema() {
                                     "slide_front.csv, velocity_profile.csv)", "s", 0.005, 0.0, inf, true, false)},
        {"slide_outline_times", S::vector("times of the deformable slides' upper surfaces in slide_outline.csv, each "
                                          "taken at the first step at or after it", "s", -1, std::vector<double>{}, 0.0)},
-       {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)}},
+       {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)},
+       {"checkpoint_interval",
+        S::number("simulated time between checkpoints (checkpoint.bin, which slide run --resume DIR continues, bit for "
+                  "bit); 0 = none at an interval (an interrupted run, SIGINT or SIGTERM, always writes one)",
+                  "s", 0.0, 0.0, inf)}},
       false);
 }
 

@@ -13,6 +13,7 @@
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
+#include "fluid/state_stream.hpp"
 #include "fluid/viscosity.hpp"
 #include "rigid/prescribed_motion.hpp"
 #include "rigid/rigid_world.hpp"
@@ -92,6 +93,11 @@ class RigidBodies {
   // Hands the accumulated forces to the rigid world, steps it by dt (time is the time after the step), and starts
   // the next step's accumulation.
   void advance(double time_after, double dt);
+
+  // The state the step needs beyond the particles (tools/checkpoint.hpp): the rigid world (as its journal), the
+  // forces being accumulated, the last placement. Restoring expects the same bodies, made as they were.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
 
  private:
   void accumulate(const Particles<2>& P, const std::vector<Vec<2>>& per_particle, bool viscous);

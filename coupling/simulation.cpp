@@ -535,6 +535,72 @@ double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
   return n;
 }
 
+template <int D>
+void Simulation<D>::save_state(StateWriter& out) const {
+  const_cast<Particles<D>&>(particles).for_each_array([&](auto& v) { out.put(v); });
+  out.put(particles.ghost_source);
+  out.put(particles.ghost_shift);
+  out.put<std::uint64_t>(particles.removed_count);
+  out.put(time_);
+  out.put(step_count_);
+  out.put(limit_counts_);
+  out.put(largest_number_density_ratio_);
+  out.put(largest_number_density_ratio_time_);
+  out.put(position_at_build_);
+  out.put(rebuilds_);
+  out.put(viscous_solves_);
+  out.put(last_viscous_solve_);
+  out.put<std::uint64_t>(left_the_domain_.size());
+  for (const auto& l : left_the_domain_) {
+    out.put(l.id);
+    out.put(l.time);
+    out.put(l.position);
+  }
+  out.put(options.velocity_damping_rate);
+  out.put(rheology_suspended_);
+  out.put(bodies_ != nullptr);
+  if constexpr (D == 2) {
+    if (bodies_) bodies_->save_state(out);
+  }
+}
+
+template <int D>
+void Simulation<D>::restore_state(StateReader& in) {
+  const std::size_t made = particles.real_count() + particles.removed_count;
+  particles.for_each_array([&](auto& v) { in.get(v); });
+  in.get(particles.ghost_source);
+  in.get(particles.ghost_shift);
+  particles.removed_count = in.get<std::uint64_t>();
+  if (particles.real_count() + particles.removed_count != made)
+    throw std::runtime_error("the checkpoint's particles are not the scene's");
+  in.get(time_);
+  in.get(step_count_);
+  in.get(limit_counts_);
+  in.get(largest_number_density_ratio_);
+  in.get(largest_number_density_ratio_time_);
+  in.get(position_at_build_);
+  in.get(rebuilds_);
+  in.get(viscous_solves_);
+  in.get(last_viscous_solve_);
+  left_the_domain_.resize(in.get<std::uint64_t>());
+  for (auto& l : left_the_domain_) {
+    in.get(l.id);
+    in.get(l.time);
+    in.get(l.position);
+  }
+  in.get(options.velocity_damping_rate);
+  in.get(rheology_suspended_);
+  if (in.get<bool>() != (bodies_ != nullptr)) throw std::runtime_error("the checkpoint's bodies are not the scene's");
+  if constexpr (D == 2) {
+    if (bodies_) bodies_->restore_state(in);
+  }
+  // The neighbour list as it was built: from the positions of that moment, in the present order (no re-sort).
+  scratch_.assign(particles.size(), Vec<D>::Zero());
+  predictor_acceleration_.assign(particles.size(), Vec<D>::Zero());
+  grid_.bin(position_at_build_);
+  build_neighbor_list(grid_, position_at_build_, list_radius(), list_, particles.real_count());
+}
+
 template class Simulation<2>;
 template class Simulation<3>;
 

@@ -24,6 +24,7 @@
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/phase.hpp"
+#include "fluid/state_stream.hpp"
 #include "fluid/viscosity.hpp"
 #include "fluid/wall_crossing.hpp"
 
@@ -112,6 +113,13 @@ class Simulation {
   // Advances by dt: the stages below in order, then the checks. Returns the instability found after the step, if
   // any (the state is then the failed one).
   std::optional<Instability> step(double dt, TimeStepLimit limit);
+
+  // Everything a step depends on beyond the scene (tools/checkpoint.hpp): the particles, time and counters, the
+  // neighbour list's state (the positions it was built at, in the same order, so that it is rebuilt at the same
+  // step), what was recorded so far, and the bodies'. Restoring expects a simulation made from the same scene and
+  // initialised; afterwards the next step is the one the saved run would have taken, bit for bit.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
 
   // Checks the current state: non-finite values, particles out of the domain, number-density collapse, speed.
   std::optional<Instability> check() const;

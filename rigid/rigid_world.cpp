@@ -3,7 +3,9 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
+#include <vector>
 
 namespace slide::rigid {
 
@@ -15,6 +17,9 @@ btVector3 v3(const Vec2& v) { return btVector3(v[0], v[1], 0.0); }
 // The rotation about z from a quaternion that has only a z component (planar motion).
 double z_angle(const btQuaternion& q) { return 2.0 * std::atan2(q.z(), q.w()); }
 }  // namespace
+
+// The calls a journal records.
+enum class Op { add_body = 1, add_static_segment, set_held, set_kinematic_state, translate, set_velocity, apply_force, step };
 
 struct RigidWorld::Impl {
   btDefaultCollisionConfiguration configuration;
@@ -40,6 +45,12 @@ struct RigidWorld::Impl {
     PlanarState kinematic_state;  // kinematic bodies: as last set
   };
   std::vector<Body> bodies;
+  // Every call that changed the world, in order, with its arguments (RigidWorld::journal).
+  std::vector<double> journal;
+  void record(Op op, std::initializer_list<double> args) {
+    journal.push_back(static_cast<double>(op));
+    journal.insert(journal.end(), args);
+  }
   std::vector<std::unique_ptr<btBoxShape>> ground_shapes;
   std::vector<std::unique_ptr<btRigidBody>> ground;
 
@@ -56,6 +67,10 @@ RigidWorld::RigidWorld(const Vec2& gravity, double margin) : impl_(std::make_uni
 RigidWorld::~RigidWorld() = default;
 
 int RigidWorld::add_body(const BodySpec& spec_in) {
+  impl_->record(Op::add_body, {double(spec_in.kinematic), double(spec_in.locked[0]), double(spec_in.locked[1]),
+                               double(spec_in.locked[2]), spec_in.mass, spec_in.inertia, spec_in.friction,
+                               spec_in.restitution, double(spec_in.outline.size())});
+  for (const Vec2& p : spec_in.outline) impl_->journal.insert(impl_->journal.end(), {p[0], p[1]});
   BodySpec spec = spec_in;
   spec.outline = counter_clockwise(spec.outline);
   if (!is_convex_ccw(spec.outline)) throw std::invalid_argument("a body's outline must be a convex polygon");
@@ -99,6 +114,8 @@ int RigidWorld::add_body(const BodySpec& spec_in) {
 
 void RigidWorld::add_static_segment(const Vec2& a, const Vec2& b, const Vec2& into_solid, double thickness,
                                     double friction, double restitution) {
+  impl_->record(Op::add_static_segment,
+                {a[0], a[1], b[0], b[1], into_solid[0], into_solid[1], thickness, friction, restitution});
   const Vec2 d = b - a;
   const double len = d.norm();
   if (len <= 0.0) throw std::invalid_argument("static segment of zero length");
@@ -140,6 +157,7 @@ double RigidWorld::mass(int i) const { return impl_->bodies.at(i).spec.mass; }
 double RigidWorld::inertia(int i) const { return impl_->bodies.at(i).spec.inertia; }
 
 void RigidWorld::set_held(int i, bool held) {
+  impl_->record(Op::set_held, {double(i), double(held)});
   auto& b = impl_->bodies.at(i);
   if (b.spec.kinematic || b.held == held) return;
   b.held = held;
@@ -152,6 +170,8 @@ void RigidWorld::set_held(int i, bool held) {
 }
 
 void RigidWorld::set_kinematic_state(int i, const PlanarState& s) {
+  impl_->record(Op::set_kinematic_state, {double(i), s.position[0], s.position[1], s.angle, s.velocity[0],
+                                          s.velocity[1], s.angular_velocity});
   auto& b = impl_->bodies.at(i);
   if (!b.spec.kinematic) throw std::logic_error("set_kinematic_state on a dynamic body");
   btTransform tr;
@@ -167,6 +187,7 @@ void RigidWorld::set_kinematic_state(int i, const PlanarState& s) {
 }
 
 void RigidWorld::translate(int i, const Vec2& delta) {
+  impl_->record(Op::translate, {double(i), delta[0], delta[1]});
   auto& b = impl_->bodies.at(i);
   btTransform tr = b.rigid->getWorldTransform();
   tr.setOrigin(tr.getOrigin() + v3(delta));
@@ -177,12 +198,14 @@ void RigidWorld::translate(int i, const Vec2& delta) {
 }
 
 void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_velocity) {
+  impl_->record(Op::set_velocity, {double(i), velocity[0], velocity[1], angular_velocity});
   auto& b = impl_->bodies.at(i);
   b.rigid->setLinearVelocity(v3(velocity));
   b.rigid->setAngularVelocity(btVector3(0, 0, angular_velocity));
 }
 
 void RigidWorld::apply_force(int i, const Vec2& force, double torque) {
+  impl_->record(Op::apply_force, {double(i), force[0], force[1], torque});
   auto& b = impl_->bodies.at(i);
   if (b.spec.kinematic) return;
   b.rigid->applyCentralForce(v3(force));
@@ -191,6 +214,7 @@ void RigidWorld::apply_force(int i, const Vec2& force, double torque) {
 }
 
 void RigidWorld::step(double dt) {
+  impl_->record(Op::step, {dt});
   for (auto& b : impl_->bodies) {
     const btVector3 v = b.rigid->getLinearVelocity();
     b.velocity_before = Vec2(v.x(), v.y());
@@ -215,6 +239,78 @@ void RigidWorld::step(double dt) {
 }
 
 Vec2 RigidWorld::contact_force(int i) const { return impl_->bodies.at(i).contact; }
+
+const std::vector<double>& RigidWorld::journal() const { return impl_->journal; }
+
+void RigidWorld::replay(const std::vector<double>& journal) {
+  impl_ = std::make_unique<Impl>(impl_->gravity, impl_->margin);
+  std::size_t at = 0;
+  auto next = [&]() {
+    if (at >= journal.size()) throw std::runtime_error("the rigid world's journal is truncated");
+    return journal[at++];
+  };
+  auto vec = [&]() {
+    const double x = next();
+    return Vec2(x, next());
+  };
+  while (at < journal.size()) {
+    switch (static_cast<Op>(static_cast<int>(next()))) {
+      case Op::add_body: {
+        BodySpec spec;
+        spec.kinematic = next() != 0.0;
+        for (bool& l : spec.locked) l = next() != 0.0;
+        spec.mass = next();
+        spec.inertia = next();
+        spec.friction = next();
+        spec.restitution = next();
+        const auto n = static_cast<std::size_t>(next());
+        for (std::size_t k = 0; k < n; ++k) spec.outline.push_back(vec());
+        add_body(spec);
+        break;
+      }
+      case Op::add_static_segment: {
+        const Vec2 a = vec(), b = vec(), into = vec();
+        const double thickness = next(), friction = next();
+        add_static_segment(a, b, into, thickness, friction, next());
+        break;
+      }
+      case Op::set_held: {
+        const int i = static_cast<int>(next());
+        set_held(i, next() != 0.0);
+        break;
+      }
+      case Op::set_kinematic_state: {
+        const int i = static_cast<int>(next());
+        PlanarState s;
+        s.position = vec();
+        s.angle = next();
+        s.velocity = vec();
+        s.angular_velocity = next();
+        set_kinematic_state(i, s);
+        break;
+      }
+      case Op::translate: {
+        const int i = static_cast<int>(next());
+        translate(i, vec());
+        break;
+      }
+      case Op::set_velocity: {
+        const int i = static_cast<int>(next());
+        const Vec2 v = vec();
+        set_velocity(i, v, next());
+        break;
+      }
+      case Op::apply_force: {
+        const int i = static_cast<int>(next());
+        const Vec2 f = vec();
+        apply_force(i, f, next());
+        break;
+      }
+      case Op::step: step(next()); break;
+      default: throw std::runtime_error("the rigid world's journal holds an unknown call");
+    }
+  }
+}
 
 std::size_t bullet_scalar_size() { return sizeof(btScalar); }
 

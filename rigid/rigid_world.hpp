@@ -64,6 +64,13 @@ class RigidWorld {
   // m (v_new - v_old) / dt - m g - applied force. Zero for kinematic bodies.
   Vec2 contact_force(int body) const;
 
+  // Every call that changed the world since it was made, in order with its arguments. Replaying it into a fresh
+  // world of the same gravity and margin gives the same world bit for bit, Bullet's contact caches included (Bullet
+  // is deterministic for the same calls): a checkpoint stores this rather than Bullet's internals.
+  const std::vector<double>& journal() const;
+  // Empties the world and makes the calls of `journal` again. Throws std::runtime_error on a malformed journal.
+  void replay(const std::vector<double>& journal);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -1,5 +1,7 @@
 #include "tools/atomic_file.hpp"
 
+#include <fstream>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -156,5 +158,17 @@ void CsvWriter::add_labelled_row(double first, std::string_view label, std::span
 }
 
 void CsvWriter::flush() const { write_file_atomically(path_, text_); }
+
+void CsvWriter::continue_from_file(std::size_t length, std::size_t rows) {
+  std::ifstream in(path_, std::ios::binary);
+  std::string text(length, '\0');
+  if (!in || !in.read(text.data(), static_cast<std::streamsize>(length)))
+    throw std::runtime_error(fmt::format("'{}' is missing or shorter than at the checkpoint ({} bytes)", path_.string(),
+                                         length));
+  if (!text.starts_with(text_))
+    throw std::runtime_error(fmt::format("'{}' does not start with this run's header", path_.string()));
+  text_ = std::move(text);
+  rows_ = rows;
+}
 
 }  // namespace slide::tools

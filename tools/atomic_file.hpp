@@ -50,6 +50,11 @@ class CsvWriter {
   // Full file content as flush() would write it.
   const std::string& text() const { return text_; }
 
+  // Continues a table written before (a resumed run): its first `length` bytes on disk, which hold `rows` rows, become
+  // the content; what the file holds beyond them (written after a checkpoint) is dropped at the next flush. Throws
+  // std::runtime_error naming the file when it is missing, shorter, or starts with another header.
+  void continue_from_file(std::size_t length, std::size_t rows);
+
  private:
   std::filesystem::path path_;
   std::vector<std::string> columns_;

@@ -8,7 +8,9 @@
 #include <csignal>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <optional>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "cases/check_report.hpp"
@@ -18,6 +20,7 @@
 #include "coupling/surge_front.hpp"
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
+#include "tools/checkpoint.hpp"
 #include "tools/output_folder.hpp"
 #include "tools/run_outputs.hpp"
 #include "tools/sweep/recommendation.hpp"
@@ -35,8 +38,9 @@ double process_cpu_seconds() {
 }  // namespace
 namespace {
 
+// The signal that asked the run to stop (SIGINT: Ctrl-C; SIGTERM: what schedulers send before they kill a job), or 0.
 volatile std::sig_atomic_t interrupted = 0;
-extern "C" void on_sigint(int) { interrupted = 1; }
+extern "C" void on_stop_signal(int signal) { interrupted = signal; }
 
 using Clock = std::chrono::steady_clock;
 using nlohmann::json;
@@ -126,7 +130,7 @@ int check_command(const RunArguments& args) {
 
 namespace {
 
-// Ctrl-C stops the loop before the next step.
+// SIGINT or SIGTERM stops the loop before the next step.
 class InterruptWatch : public StepObserver<2> {
  public:
   bool before_step(const Simulation<2>&) override { return interrupted == 0; }
@@ -193,6 +197,120 @@ std::string left_the_domain_note(const Simulation<2>& sim) {
                      first.time, first.position[0], first.position[1]);
 }
 
+// A run ready to step: its scene built, its output folder checked, and for a resumed run the checkpoint's state.
+struct PreparedRun {
+  std::unique_ptr<cases::Scene> scene;
+  std::filesystem::path out;
+  CheckpointHeader header;  // what its checkpoints will say
+  std::optional<Checkpoint> resumed_from;
+};
+
+// A new run: resolve, check the output folder, build (settling included).
+std::optional<PreparedRun> prepare_new_run(const RunArguments& args) {
+  const auto resolved = resolve_or_report(args);
+  if (!resolved) return std::nullopt;
+  // The output folder is checked before anything is built or written (the case's name may come from the scene).
+  const std::string name = (*resolved)["name"].as<std::string>();
+  PreparedRun run;
+  run.out = args.out.empty() ? std::filesystem::path("runs") / (name.empty() ? args.scene.stem().string() : name)
+                             : args.out;
+  if (const auto why = output_folder_problem(run.out)) {
+    std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
+    return std::nullopt;
+  }
+  run.scene = build_or_report(args, *resolved);
+  if (!run.scene) return std::nullopt;
+  run.header = {SLIDE_VERSION, std::filesystem::absolute(args.scene).string(), args.overrides, YAML::Dump(*resolved)};
+  return run;
+}
+
+// The first line where two texts differ, for a refusal's message.
+std::string first_difference(const std::string& a, const std::string& b) {
+  std::istringstream sa(a), sb(b);
+  std::string la, lb;
+  for (int line = 1;; ++line) {
+    const bool more_a = static_cast<bool>(std::getline(sa, la)), more_b = static_cast<bool>(std::getline(sb, lb));
+    if (!more_a && !more_b) return "none";
+    if (la != lb || more_a != more_b)
+      return fmt::format("line {} of the resolved scene: \"{}\" against the checkpoint's \"{}\"", line,
+                         more_b ? lb : "", more_a ? la : "");
+  }
+}
+
+// A resumed run: the checkpoint's scene (or the one given, which must be the same), built without settling, then the
+// checkpoint's state put back. Refusals name why (exit 2).
+std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
+  PreparedRun run;
+  run.out = args.resume;
+  try {
+    run.resumed_from = read_checkpoint(args.resume);
+  } catch (const CheckpointError& e) {
+    std::cerr << "slide: --resume " << args.resume.string() << ": " << e.what() << "; nothing was run or written\n";
+    return std::nullopt;
+  }
+  const CheckpointHeader& h = run.resumed_from->header;
+  if (h.version != SLIDE_VERSION) {
+    std::cerr << fmt::format("slide: --resume {}: the checkpoint was written by slide {} and this is slide {}: its "
+                             "state is not this version's; resume it with slide {} or run the scene again\n",
+                             args.resume.string(), h.version, SLIDE_VERSION, h.version);
+    return std::nullopt;
+  }
+  const std::filesystem::path scene_file = args.scene.empty() ? std::filesystem::path(h.scene_file) : args.scene;
+  if (!args.scene.empty()) {
+    const auto resolved = resolve_or_report(args);
+    if (!resolved) return std::nullopt;
+    if (const std::string given = YAML::Dump(*resolved); given != h.resolved_scene) {
+      std::cerr << fmt::format("slide: --resume {}: the checkpoint belongs to another scene than {} with these --set "
+                               "(first difference: {}); resume without a scene to continue the checkpoint's own\n",
+                               args.resume.string(), args.scene.string(), first_difference(given, h.resolved_scene));
+      return std::nullopt;
+    }
+  }
+  try {
+    run.scene = cases::build_scene(YAML::Load(h.resolved_scene), scene_file.stem().string(),
+                                   scene_file.parent_path().empty() ? "." : scene_file.parent_path(), true);
+  } catch (const cases::SceneError& e) {
+    std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
+              << "\n";
+    return std::nullopt;
+  }
+  run.header = h;
+  return run;
+}
+
+// Writes checkpoint.bin at the scene's interval of simulated time (after the outputs have sampled the step), and on
+// demand (an interrupted run).
+class CheckpointObserver : public StepObserver<2> {
+ public:
+  CheckpointObserver(const PreparedRun& run, RunOutputs& outputs, const Simulation<2>& sim)
+      : run_(run), outputs_(outputs), sim_(sim), interval_(run.scene->output.checkpoint_interval),
+        next_(interval_ > 0 ? interval_ : std::numeric_limits<double>::infinity()) {}
+  void after_step(Simulation<2>& sim, double) override {
+    if (sim.time() < next_ - 1e-12 * std::max(1.0, next_)) return;
+    next_ += interval_;
+    if (sim.time() >= next_) next_ = sim.time() + interval_;
+    write();
+  }
+  void write() {
+    outputs_.flush();
+    StateWriter state;
+    sim_.save_state(state);
+    outputs_.save_state(state);
+    state.put(next_);
+    Checkpoint c{run_.header, state.bytes()};
+    c.header.time = sim_.time();
+    c.header.step = sim_.step_count();
+    write_checkpoint(run_.out, c);
+  }
+  void restore(StateReader& in) { in.get(next_); }
+
+ private:
+  const PreparedRun& run_;
+  RunOutputs& outputs_;
+  const Simulation<2>& sim_;
+  double interval_, next_;
+};
+
 }  // namespace
 
 int run_command(const RunArguments& args) {
@@ -202,34 +320,43 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
-  const auto resolved = resolve_or_report(args);
-  if (!resolved) return 2;
-  // The output folder is checked before anything is built or written (the case's name may come from the scene).
-  const std::string name = (*resolved)["name"].as<std::string>();
-  const std::filesystem::path out =
-      args.out.empty() ? std::filesystem::path("runs") / (name.empty() ? args.scene.stem().string() : name) : args.out;
-  if (const auto why = output_folder_problem(out)) {
-    std::cerr << "slide: --out " << out.string() << ": " << *why << "; nothing was run or written\n";
-    return 2;
-  }
-  const std::unique_ptr<cases::Scene> scene = build_or_report(args, *resolved);
-  if (!scene) return 2;
+  std::optional<PreparedRun> run = args.resume.empty() ? prepare_new_run(args) : prepare_resumed_run(args);
+  if (!run) return 2;
+  const std::unique_ptr<cases::Scene>& scene = run->scene;
+  const std::filesystem::path& out = run->out;
   auto& sim = *scene->simulation;
   std::filesystem::create_directories(out);
-  RunOutputs outputs(*scene, out);
+  RunOutputs outputs(*scene, out, run->resumed_from.has_value());
+  CheckpointObserver checkpoints(*run, outputs, sim);
+  if (run->resumed_from) {
+    try {
+      StateReader in(run->resumed_from->state);
+      sim.restore_state(in);
+      outputs.restore_state(in);
+      checkpoints.restore(in);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "slide: --resume " << out.string() << ": " << e.what() << "; nothing was run\n";
+      return 2;
+    }
+  }
 
   const auto loop_start = Clock::now();
   const double cpu_at_loop_start = process_cpu_seconds();
+  const long steps_at_loop_start = sim.step_count();
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
+  auto loop_rate = [&](double wall) {
+    return wall > 0 ? double(sim.particles.real_count()) * double(sim.step_count() - steps_at_loop_start) / wall : 0.0;
+  };
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
-    const double particle_steps = double(sim.particles.real_count()) * double(sim.step_count());
     json j;
     j["program"] = "slide";
     j["version"] = SLIDE_VERSION;
     j["case"] = scene->name;
-    j["scene_file"] = args.scene.string();
-    j["overrides"] = args.overrides;
+    j["scene_file"] = run->header.scene_file;
+    j["overrides"] = run->header.overrides;
+    if (run->resumed_from)
+      j["resumed_from"] = {{"time", run->resumed_from->header.time}, {"step", run->resumed_from->header.step}};
     j["status"] = status;
     j["message"] = message;
     j["threads"] = thread_count();
@@ -262,7 +389,7 @@ int run_command(const RunArguments& args) {
     j["wall_seconds"] = wall;
     j["cpu_seconds"] = process_cpu_seconds();
     j["loop_cpu_seconds"] = process_cpu_seconds() - cpu_at_loop_start;
-    j["particle_steps_per_second"] = wall > 0 ? particle_steps / wall : 0.0;
+    j["particle_steps_per_second"] = loop_rate(wall);
     j["snapshots"] = outputs.snapshot_count();
     j["left_the_domain"] = left_the_domain_json(sim);
     j["scene"] = to_json(scene->resolved);
@@ -271,27 +398,34 @@ int run_command(const RunArguments& args) {
   };
 
   try {
-    outputs.write_initial();
+    if (!run->resumed_from) outputs.write_initial();
     write_run_json("running", "", json::object());
 
-    auto previous_handler = std::signal(SIGINT, on_sigint);
+    auto previous_sigint = std::signal(SIGINT, on_stop_signal);
+    auto previous_sigterm = std::signal(SIGTERM, on_stop_signal);
     interrupted = 0;
     InterruptWatch interrupt;
     LastGoodState last_good(sim);
     ProgressLine progress(loop_start, scene->end_time);
-    std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs};
+    std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
     if (!args.quiet) observers.push_back(&progress);
     const AdvanceResult result = advance<2>(sim, scene->end_time, observers);
-    std::signal(SIGINT, previous_handler);
+    std::signal(SIGINT, previous_sigint);
+    std::signal(SIGTERM, previous_sigterm);
 
     if (result.outcome == AdvanceResult::Outcome::stopped) {
+      // The checkpoint first: it records the series as a straight run has it, without the final snapshot below.
+      checkpoints.write();
       outputs.write_snapshot(sim.particles, sim.time(), sim.step_count());
       outputs.flush();
-      const std::string msg = fmt::format("interrupted at t = {:.6g} s (step {}); final snapshot written", sim.time(),
-                                          sim.step_count());
+      const int signal = interrupted;
+      const std::string msg = fmt::format(
+          "interrupted by {} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with slide run "
+          "--resume {}",
+          signal == SIGTERM ? "SIGTERM" : "SIGINT", sim.time(), sim.step_count(), out.string());
       write_run_json("interrupted", msg, json::object());
       std::cerr << "\nslide: " << msg << "\n";
-      return 130;
+      return 128 + signal;
     }
     if (const auto& bad = result.instability) {
       outputs.write_snapshot(last_good.particles, last_good.time, last_good.step);
@@ -315,10 +449,10 @@ int run_command(const RunArguments& args) {
     }
     outputs.write_final();
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
-    const std::string msg = fmt::format(
-        "completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",
-        sim.time(), sim.step_count(), wall, double(sim.particles.real_count()) * sim.step_count() / wall / 1e6,
-        limit_summary(sim.limit_counts())) + left_the_domain_note(sim);
+    const std::string msg =
+        fmt::format("completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",
+                    sim.time(), sim.step_count(), wall, loop_rate(wall) / 1e6, limit_summary(sim.limit_counts())) +
+        left_the_domain_note(sim);
     write_run_json("completed", msg, json::object());
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\rslide: " << msg << "\n";
     return 0;

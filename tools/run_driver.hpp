@@ -1,6 +1,6 @@
 #pragma once
 // The `slide run` and `slide check` commands, as functions returning the process exit code
-// (0 completed, 2 invalid scene or arguments, 3 unstable, 130 interrupted).
+// (0 completed, 2 invalid scene or arguments, 3 unstable, 130 interrupted by SIGINT, 143 by SIGTERM).
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -17,6 +17,8 @@ struct RunArguments {
   // check --target-error E --with SWEEP_DIR: the cheapest configuration of a finished sweep within E (NaN: not asked)
   double target_error = std::numeric_limits<double>::quiet_NaN();
   std::filesystem::path sweep_dir;
+  // run --resume DIR: continue the run in DIR from its checkpoint (scene: empty, or the same scene as the checkpoint's)
+  std::filesystem::path resume;
 };
 
 int run_command(const RunArguments& args);

@@ -61,9 +61,9 @@ SnapshotLegend snapshot_legend(const Simulation<2>& sim) {
 
 }  // namespace
 
-RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& out)
+RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& out, bool resuming)
     : scene_(scene), sim_(*scene.simulation) {
-  if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_));
+  if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_), !resuming);
   if (sim_.bodies())
     bodies_.emplace(out / "bodies.csv",
                     std::vector<std::string>{"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
@@ -224,6 +224,58 @@ void RunOutputs::write_final() {
   if (t > last_sample_time_ + eps_) sample();
   if (bodies_ && t > last_body_sample_time_ + eps_) sample_bodies();
   flush();
+}
+
+// Every table, in one fixed order (the checkpoint's), each whether or not this scene writes it.
+template <class F>
+void RunOutputs::for_each_csv(F&& f) {
+  for (auto* csv : {&gauges_, &front_, &velocity_profile_, &bodies_, &profiles_, &slide_front_, &slide_outline_}) f(*csv);
+}
+
+void RunOutputs::save_state(StateWriter& out) const {
+  for (double t : {eps_, next_snapshot_, next_sample_, next_body_sample_, last_sample_time_, last_body_sample_time_})
+    out.put(t);
+  out.put<std::uint64_t>(next_profile_);
+  out.put<std::uint64_t>(next_outline_);
+  const_cast<RunOutputs*>(this)->for_each_csv([&](const std::optional<CsvWriter>& csv) {
+    out.put(csv.has_value());
+    if (csv) {
+      out.put<std::uint64_t>(csv->text().size());
+      out.put<std::uint64_t>(csv->row_count());
+    }
+  });
+  out.put(snapshots_.has_value());
+  if (snapshots_) {
+    out.put<std::uint64_t>(snapshots_->entries().size());
+    for (const auto& e : snapshots_->entries()) {
+      out.put(e.time);
+      out.put<std::int64_t>(e.step);
+      out.put<std::uint64_t>(e.n);
+    }
+  }
+}
+
+void RunOutputs::restore_state(StateReader& in) {
+  for (double* t : {&eps_, &next_snapshot_, &next_sample_, &next_body_sample_, &last_sample_time_, &last_body_sample_time_})
+    in.get(*t);
+  next_profile_ = in.get<std::uint64_t>();
+  next_outline_ = in.get<std::uint64_t>();
+  for_each_csv([&](std::optional<CsvWriter>& csv) {
+    if (in.get<bool>() != csv.has_value()) throw std::runtime_error("the checkpoint's outputs are not the scene's");
+    if (!csv) return;
+    const auto length = in.get<std::uint64_t>();
+    csv->continue_from_file(length, in.get<std::uint64_t>());
+  });
+  if (in.get<bool>() != snapshots_.has_value()) throw std::runtime_error("the checkpoint's outputs are not the scene's");
+  if (snapshots_) {
+    std::vector<SnapshotWriter::Entry> entries(in.get<std::uint64_t>());
+    for (auto& e : entries) {
+      in.get(e.time);
+      e.step = in.get<std::int64_t>();
+      e.n = in.get<std::uint64_t>();
+    }
+    snapshots_->continue_series(std::move(entries));
+  }
 }
 
 }  // namespace slide::tools

@@ -26,7 +26,8 @@ struct IdOrdered {
 
 class RunOutputs : public StepObserver<2> {
  public:
-  RunOutputs(const cases::Scene& scene, const std::filesystem::path& out);
+  // resuming: the outputs continue those in `out` (restore_state), rather than starting afresh.
+  RunOutputs(const cases::Scene& scene, const std::filesystem::path& out, bool resuming = false);
 
   // Writes the initial state (snapshot and first samples) and flushes.
   void write_initial();
@@ -38,12 +39,19 @@ class RunOutputs : public StepObserver<2> {
   void flush();
   std::size_t snapshot_count() const { return snapshots_ ? snapshots_->count() : 0; }
 
+  // What the outputs have written so far and when they sample next (tools/checkpoint.hpp); flush() first, so that
+  // the files on disk hold what the state says. Restoring takes the files back to that point.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
+
  private:
   void sample();
   void sample_bodies();
   void sample_profiles();
   void sample_slides();
   void sample_slide_outlines();
+  template <class F>
+  void for_each_csv(F&& f);
 
   const cases::Scene& scene_;
   const Simulation<2>& sim_;

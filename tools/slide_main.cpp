@@ -16,8 +16,12 @@ int run_main(int argc, char** argv) {
   std::string scene;
 
   auto* run = app.add_subcommand("run", "run a scene");
-  run->add_option("scene", scene, "scene file (YAML)")->required();
-  run->add_option("--out", args.out, "output folder (default runs/<case name>)");
+  run->add_option("scene", scene, "scene file (YAML); with --resume, optional (it must then be the checkpoint's)");
+  auto* out_option = run->add_option("--out", args.out, "output folder (default runs/<case name>)");
+  std::string resume_dir;
+  auto* resume = run->add_option("--resume", resume_dir,
+                                 "continue the run in this folder from its checkpoint (checkpoint.bin), bit for bit");
+  resume->excludes(out_option);
   run->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
   run->add_option("--threads", args.threads, "number of threads (default: all)")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", args.quiet, "no progress line");
@@ -60,6 +64,11 @@ int run_main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   args.scene = scene;
+  args.resume = resume_dir;
+  if (app.got_subcommand("run") && scene.empty() && resume_dir.empty()) {
+    std::cerr << "slide run: give a scene file, or --resume DIR\n";
+    return 2;
+  }
   if (app.got_subcommand("schema")) {
     std::cout << slide::cases::scene_schema().document("slide scene reference");
     return 0;

@@ -177,7 +177,7 @@ std::string SnapshotWriter::snapshot_relative_path(size_t index) {
   return fmt::format("snapshots/snapshot_{:06d}.h5", index);
 }
 
-SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend)
+SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend, bool new_series)
     : out_dir_(std::move(out_dir)), legend_(std::move(legend)) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / "snapshots", ec);
@@ -186,17 +186,38 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend leg
                                          (out_dir_ / "snapshots").string(), ec.message()));
   }
   // A new series: drop snapshot files of an earlier run so the folder matches the master file.
+  if (new_series) remove_snapshot_files_from(0);
+  // HDF5 prints its error stack on failures; keep that (useful diagnostics) but make sure the
+  // library is initialised before use.
+  H5open();
+}
+
+void SnapshotWriter::remove_snapshot_files_from(size_t first) const {
+  std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(out_dir_ / "snapshots", ec)) {
     const std::string name = e.path().filename().string();
-    if (name.starts_with("snapshot_") &&
-        (name.ends_with(".h5") || name.find(".h5.tmp.") != std::string::npos)) {
+    if (!name.starts_with("snapshot_")) continue;
+    const bool temporary = name.find(".h5.tmp.") != std::string::npos;
+    const std::string digits = name.substr(9, 6);
+    const bool numbered = name.ends_with(".h5") && name.size() == std::string("snapshot_000000.h5").size() &&
+                          digits.find_first_not_of("0123456789") == std::string::npos;
+    const bool later = numbered && std::stoul(digits) >= first;
+    if (temporary || later) {
       std::error_code rm_ec;
       std::filesystem::remove(e.path(), rm_ec);
     }
   }
-  // HDF5 prints its error stack on failures; keep that (useful diagnostics) but make sure the
-  // library is initialised before use.
-  H5open();
+}
+
+void SnapshotWriter::continue_series(std::vector<Entry> entries) {
+  for (size_t i = 0; i < entries.size(); ++i)
+    if (!std::filesystem::exists(out_dir_ / snapshot_relative_path(i)))
+      throw std::runtime_error(fmt::format("snapshot file '{}' of the checkpoint's series is missing",
+                                           (out_dir_ / snapshot_relative_path(i)).string()));
+  remove_snapshot_files_from(entries.size());
+  entries_ = std::move(entries);
+  write_master();
+  write_xdmf();
 }
 
 void SnapshotWriter::write(double time, long step, const SnapshotFields& f) {

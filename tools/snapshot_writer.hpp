@@ -49,8 +49,19 @@ struct SnapshotLegend {
 
 class SnapshotWriter {
  public:
-  // Creates out_dir and out_dir/snapshots if needed.
-  explicit SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend = {});
+  // Creates out_dir and out_dir/snapshots if needed, and starts a new series (below).
+  explicit SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend = {}, bool new_series = true);
+
+  // One snapshot of the series: when, which step, how many particles.
+  struct Entry {
+    double time;
+    long step;
+    size_t n;
+  };
+  const std::vector<Entry>& entries() const { return entries_; }
+  // Continues a series written before (a resumed run; construct with new_series = false): its first entries.size()
+  // snapshot files, which must exist, are kept, later ones are removed, and the master and XDMF files are re-created.
+  void continue_series(std::vector<Entry> entries);
 
   // Appends one snapshot: writes its file, then re-creates particles.h5 and particles.xdmf.
   // Throws std::invalid_argument on inconsistent span sizes or dim, std::runtime_error (naming
@@ -68,14 +79,10 @@ class SnapshotWriter {
   static std::string snapshot_name(size_t index);
 
  private:
-  struct Entry {
-    double time;
-    long step;
-    size_t n;
-  };
   void write_snapshot_file(const std::filesystem::path& final_path, double time, long step,
                            const SnapshotFields& f) const;
   void write_master() const;
+  void remove_snapshot_files_from(size_t first) const;
   void write_xdmf() const;
 
   std::filesystem::path out_dir_;

@@ -1,0 +1,92 @@
+#pragma once
+// A run's state as bytes, for checkpoints (tools/checkpoint.hpp): each class that holds state the step needs writes
+// its own fields in a fixed order and reads them back in the same order. Values are stored as their bytes (the
+// same machine and build read them), so a restored double is the same double, bit for bit.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace slide {
+
+// Plain values, and fixed-size Eigen vectors of doubles (stored as their coefficients).
+template <class T>
+concept FixedVector = requires { T::SizeAtCompileTime; typename T::Scalar; } && std::is_same_v<typename T::Scalar, double>;
+template <class T>
+concept StateValue = std::is_trivially_copyable_v<T> || FixedVector<T>;
+
+class StateWriter {
+ public:
+  template <StateValue T>
+  void put(const T& value) {
+    if constexpr (FixedVector<T>) {
+      for (int k = 0; k < T::SizeAtCompileTime; ++k) put(value[k]);
+    } else {
+      const auto* p = reinterpret_cast<const char*>(&value);
+      bytes_.insert(bytes_.end(), p, p + sizeof(T));
+    }
+  }
+  template <StateValue T>
+  void put(const std::vector<T>& values) {
+    put<std::uint64_t>(values.size());
+    for (const T& v : values) put(v);
+  }
+  void put(const std::string& text) {
+    put<std::uint64_t>(text.size());
+    bytes_.insert(bytes_.end(), text.begin(), text.end());
+  }
+  const std::vector<char>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<char> bytes_;
+};
+
+class StateReader {
+ public:
+  explicit StateReader(const std::vector<char>& bytes) : bytes_(bytes) {}
+
+  template <StateValue T>
+  void get(T& value) {
+    if constexpr (FixedVector<T>) {
+      for (int k = 0; k < T::SizeAtCompileTime; ++k) get(value[k]);
+    } else {
+      take(&value, sizeof(T));
+    }
+  }
+  template <StateValue T>
+  void get(std::vector<T>& values) {
+    std::uint64_t n = 0;
+    get(n);
+    if (n > (bytes_.size() - at_) / std::max<std::size_t>(1, sizeof(T))) throw std::runtime_error("the state is truncated");
+    values.resize(n);
+    for (T& v : values) get(v);
+  }
+  void get(std::string& text) {
+    std::uint64_t n = 0;
+    get(n);
+    if (n > bytes_.size() - at_) throw std::runtime_error("the state is truncated");
+    text.assign(bytes_.data() + at_, n);
+    at_ += n;
+  }
+  template <StateValue T>
+  T get() {
+    T value{};
+    get(value);
+    return value;
+  }
+  bool at_end() const { return at_ == bytes_.size(); }
+
+ private:
+  void take(void* out, std::size_t n) {
+    if (n > bytes_.size() - at_) throw std::runtime_error("the state is truncated");
+    if (n) std::memcpy(out, bytes_.data() + at_, n);
+    at_ += n;
+  }
+  const std::vector<char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+}  // namespace slide

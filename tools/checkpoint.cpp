@@ -1,0 +1,85 @@
+#include "tools/checkpoint.hpp"
+
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "fluid/state_stream.hpp"
+#include "tools/atomic_file.hpp"
+
+namespace slide::tools {
+
+namespace {
+
+constexpr char kMagic[8] = {'S', 'L', 'I', 'D', 'E', 'C', 'K', 'P'};
+constexpr std::uint32_t kFormat = 1;
+
+// FNV-1a, 64 bits: enough to tell a torn or altered file, not a guard against tampering.
+std::uint64_t fnv1a(const char* data, std::size_t n) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::size_t i = 0; i < n; ++i) {
+    h ^= static_cast<unsigned char>(data[i]);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace
+
+std::filesystem::path checkpoint_path(const std::filesystem::path& run_dir) { return run_dir / "checkpoint.bin"; }
+
+void write_checkpoint(const std::filesystem::path& run_dir, const Checkpoint& c) {
+  StateWriter w;
+  for (char ch : kMagic) w.put(ch);
+  w.put(kFormat);
+  w.put(c.header.version);
+  w.put(c.header.scene_file);
+  w.put<std::uint64_t>(c.header.overrides.size());
+  for (const auto& o : c.header.overrides) w.put(o);
+  w.put(c.header.resolved_scene);
+  w.put(c.header.time);
+  w.put(c.header.step);
+  w.put(c.state);
+  const std::uint64_t hash = fnv1a(w.bytes().data(), w.bytes().size());
+  w.put(hash);
+  write_file_atomically(checkpoint_path(run_dir), std::string_view(w.bytes().data(), w.bytes().size()));
+}
+
+Checkpoint read_checkpoint(const std::filesystem::path& run_dir) {
+  const auto path = checkpoint_path(run_dir);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CheckpointError(fmt::format("no checkpoint in {} ({} cannot be read)", run_dir.string(), path.string()));
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t body = bytes.size() >= sizeof(std::uint64_t) ? bytes.size() - sizeof(std::uint64_t) : 0;
+  std::uint64_t stored = 0;
+  if (bytes.size() >= sizeof(kMagic) + sizeof(stored)) std::memcpy(&stored, bytes.data() + body, sizeof(stored));
+  if (bytes.size() < sizeof(kMagic) + sizeof(stored) || !std::equal(kMagic, kMagic + 8, bytes.begin()))
+    throw CheckpointError(fmt::format("{} is not a slide checkpoint", path.string()));
+  if (fnv1a(bytes.data(), body) != stored)
+    throw CheckpointError(fmt::format("{} is damaged (its checksum does not match: truncated or altered)", path.string()));
+  const std::vector<char> content(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(body));
+  StateReader r(content);
+  try {
+    for (std::size_t k = 0; k < sizeof(kMagic); ++k) r.get<char>();
+    if (const auto format = r.get<std::uint32_t>(); format != kFormat)
+      throw CheckpointError(fmt::format("{} has checkpoint format {}, this slide reads format {}", path.string(), format,
+                                        kFormat));
+    Checkpoint c;
+    r.get(c.header.version);
+    r.get(c.header.scene_file);
+    c.header.overrides.resize(r.get<std::uint64_t>());
+    for (auto& o : c.header.overrides) r.get(o);
+    r.get(c.header.resolved_scene);
+    r.get(c.header.time);
+    r.get(c.header.step);
+    r.get(c.state);
+    return c;
+  } catch (const CheckpointError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw CheckpointError(fmt::format("{} is damaged: {}", path.string(), e.what()));
+  }
+}
+
+}  // namespace slide::tools

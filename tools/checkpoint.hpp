@@ -1,0 +1,44 @@
+#pragma once
+// Checkpoints: DIR/checkpoint.bin holds what `slide run --resume DIR` needs to continue a run so that every snapshot
+// and CSV it writes is bit-identical to the straight run's, with any thread count: the scene it was made from, and the
+// state of the simulation (coupling/simulation.hpp, save_state: particles, neighbour-list state, counters, bodies
+// with Bullet's world as its journal) and of the outputs (tools/run_outputs.hpp). A run writes one at the scene's
+// output.checkpoint_interval and when it is interrupted (SIGINT, SIGTERM).
+//
+// Layout: "SLIDECKP", a format number, the header's and the state's bytes (fluid/state_stream.hpp), and an FNV-1a
+// hash of all that, so a torn or edited file is refused rather than half read. Written atomically.
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace slide::tools {
+
+struct CheckpointHeader {
+  std::string version;         // SLIDE_VERSION of the program that wrote it
+  std::string scene_file;      // as given to slide run
+  std::vector<std::string> overrides;  // --set, in order
+  std::string resolved_scene;  // the scene with every default filled in, as YAML: what the state belongs to
+  double time = 0.0;           // s, the run's time at the checkpoint
+  long step = 0;
+};
+
+struct Checkpoint {
+  CheckpointHeader header;
+  std::vector<char> state;
+};
+
+// A checkpoint that cannot be used; the message says why (missing, damaged, another version).
+class CheckpointError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::filesystem::path checkpoint_path(const std::filesystem::path& run_dir);
+void write_checkpoint(const std::filesystem::path& run_dir, const Checkpoint& checkpoint);
+// Throws CheckpointError when the file is missing, damaged or of another format; the version is for the caller to
+// compare (it names both).
+Checkpoint read_checkpoint(const std::filesystem::path& run_dir);
+
+}  // namespace slide::tools
