@@ -130,10 +130,14 @@ int check_command(const RunArguments& args) {
 
 namespace {
 
-// SIGINT or SIGTERM stops the loop before the next step.
+// SIGINT or SIGTERM stops the loop before the next step, and so does reaching --stop-at.
 class InterruptWatch : public StepObserver<2> {
  public:
-  bool before_step(const Simulation<2>&) override { return interrupted == 0; }
+  explicit InterruptWatch(double stop_at) : stop_at_(stop_at) {}
+  bool before_step(const Simulation<2>& sim) override { return interrupted == 0 && sim.time() < stop_at_; }
+
+ private:
+  double stop_at_;
 };
 
 // The state a failed run leaves as its last good snapshot: the particles every `every` steps, before the step.
@@ -233,7 +237,7 @@ std::string first_difference(const std::string& a, const std::string& b) {
     if (!more_a && !more_b) return "none";
     if (la != lb || more_a != more_b)
       return fmt::format("line {} of the resolved scene: \"{}\" against the checkpoint's \"{}\"", line,
-                         more_b ? lb : "", more_a ? la : "");
+                         more_a ? la : "", more_b ? lb : "");
   }
 }
 
@@ -404,7 +408,7 @@ int run_command(const RunArguments& args) {
     auto previous_sigint = std::signal(SIGINT, on_stop_signal);
     auto previous_sigterm = std::signal(SIGTERM, on_stop_signal);
     interrupted = 0;
-    InterruptWatch interrupt;
+    InterruptWatch interrupt(args.stop_at);
     LastGoodState last_good(sim);
     ProgressLine progress(loop_start, scene->end_time);
     std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
@@ -419,13 +423,14 @@ int run_command(const RunArguments& args) {
       outputs.write_snapshot(sim.particles, sim.time(), sim.step_count());
       outputs.flush();
       const int signal = interrupted;
+      const std::string why = signal == 0 ? "stopped as --stop-at asked" : signal == SIGTERM ? "interrupted by SIGTERM"
+                                                                                            : "interrupted by SIGINT";
       const std::string msg = fmt::format(
-          "interrupted by {} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with slide run "
-          "--resume {}",
-          signal == SIGTERM ? "SIGTERM" : "SIGINT", sim.time(), sim.step_count(), out.string());
-      write_run_json("interrupted", msg, json::object());
-      std::cerr << "\nslide: " << msg << "\n";
-      return 128 + signal;
+          "{} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with slide run --resume {}",
+          why, sim.time(), sim.step_count(), out.string());
+      write_run_json(signal == 0 ? "stopped" : "interrupted", msg, json::object());
+      if (signal != 0 || !args.quiet) std::cerr << "\nslide: " << msg << "\n";
+      return signal == 0 ? 0 : 128 + signal;
     }
     if (const auto& bad = result.instability) {
       outputs.write_snapshot(last_good.particles, last_good.time, last_good.step);

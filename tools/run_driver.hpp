@@ -19,6 +19,9 @@ struct RunArguments {
   std::filesystem::path sweep_dir;
   // run --resume DIR: continue the run in DIR from its checkpoint (scene: empty, or the same scene as the checkpoint's)
   std::filesystem::path resume;
+  // run --stop-at T: stop at the first step boundary at or after simulated time T with a checkpoint, as an
+  // interrupted run does, but exit 0 (a job with a wall-time limit runs its part and the next job resumes)
+  double stop_at = std::numeric_limits<double>::infinity();
 };
 
 int run_command(const RunArguments& args);

@@ -22,6 +22,9 @@ int run_main(int argc, char** argv) {
   auto* resume = run->add_option("--resume", resume_dir,
                                  "continue the run in this folder from its checkpoint (checkpoint.bin), bit for bit");
   resume->excludes(out_option);
+  run->add_option("--stop-at", args.stop_at,
+                  "stop at this simulated time (s) with a checkpoint and a final snapshot, exit 0; --resume continues")
+      ->check(CLI::NonNegativeNumber);
   run->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
   run->add_option("--threads", args.threads, "number of threads (default: all)")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", args.quiet, "no progress line");

@@ -1,0 +1,170 @@
+// Checkpoint and restart (issue 14): a run stopped mid-way and resumed writes the same files as the straight run,
+// bit for bit, whatever the thread counts; SIGINT and SIGTERM leave a checkpoint and a final snapshot; a checkpoint
+// that cannot be used is refused with exit 2 and a reason.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "tests/cli_helpers.hpp"
+#include "tools/checkpoint.hpp"
+
+namespace slide::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The files a run writes that a resumed run must reproduce: every CSV and the snapshot series.
+std::set<std::string> output_files(const fs::path& run) {
+  std::set<std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(run)) {
+    const std::string rel = fs::relative(e.path(), run).string();
+    if (e.path().extension() == ".csv" || e.path().extension() == ".h5" || e.path().extension() == ".xdmf")
+      files.insert(rel);
+  }
+  return files;
+}
+
+void expect_same_outputs(const fs::path& straight, const fs::path& resumed) {
+  const auto files = output_files(straight);
+  EXPECT_EQ(files, output_files(resumed));
+  EXPECT_GE(files.size(), 4u);
+  for (const auto& f : files) EXPECT_EQ(read_file(straight / f), read_file(resumed / f)) << f << " differs";
+}
+
+std::string slide_run(const std::string& arguments) { return slide_binary() + " run " + arguments + " --quiet"; }
+
+// Runs `scene` straight with `straight_threads`, and again stopped at `stop_at` with `stop_threads` and resumed with
+// `resume_threads`; the two must write the same files.
+void check_restart(const std::string& name, const std::string& scene, const std::string& sets, double stop_at,
+                   int straight_threads, int stop_threads, int resume_threads) {
+  const auto dir = fresh_directory(name);
+  const auto straight = run_command(slide_run(scene + " " + sets + " --threads " + std::to_string(straight_threads) +
+                                              " --out " + (dir / "straight").string()));
+  ASSERT_EQ(straight.exit_code, 0) << straight.output;
+  const auto stopped = run_command(slide_run(scene + " " + sets + " --threads " + std::to_string(stop_threads) +
+                                             " --stop-at " + std::to_string(stop_at) + " --out " +
+                                             (dir / "resumed").string()));
+  ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
+  const auto j = nlohmann::json::parse(read_file(dir / "resumed" / "run.json"));
+  EXPECT_EQ(j["status"], "stopped");
+  EXPECT_GE(j["simulated_time"].get<double>(), stop_at);
+  const auto resumed = run_command(slide_binary() + " run --resume " + (dir / "resumed").string() + " --quiet --threads " +
+                                   std::to_string(resume_threads));
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  const auto k = nlohmann::json::parse(read_file(dir / "resumed" / "run.json"));
+  EXPECT_EQ(k["status"], "completed");
+  EXPECT_EQ(k["resumed_from"]["step"], j["steps"]);
+  expect_same_outputs(dir / "straight", dir / "resumed");
+  fs::remove_all(dir);
+}
+
+const std::string kDamBreak = (source_dir() / "cases" / "dam_break_2d.yaml").string();
+const std::string kDamBreakSets = "--set end_time=0.12 --set output.snapshot_interval=0.02";
+
+TEST(Restart, DamBreakResumedOnOneThreadIsBitIdentical) {
+  check_restart("restart_dam_1", kDamBreak, kDamBreakSets, 0.05, 2, 2, 1);
+}
+
+TEST(Restart, DamBreakResumedOnTwoThreadsIsBitIdentical) {
+  check_restart("restart_dam_2", kDamBreak, kDamBreakSets, 0.07, 1, 1, 2);
+}
+
+// A body floating with the water while it settles (Bullet's world restored from its journal), coarser and shorter
+// than shipped.
+TEST(Restart, FloatingBlockResumedIsBitIdentical) {
+  check_restart("restart_block", (source_dir() / "cases" / "floating_block_2d.yaml").string(),
+                "--set particle_spacing=0.01 --set method.settling_time=0.5 --set end_time=0.15 "
+                "--set output.snapshot_interval=0.05",
+                0.06, 2, 2, 1);
+}
+
+// A scene whose water keeps moving long enough for a signal to arrive mid-run.
+void check_signal(const std::string& name, const char* signal, int expected_exit) {
+  const auto dir = fresh_directory(name);
+  const std::string run = slide_binary() + " run " + kDamBreak + " --set end_time=30 --threads 1 --out " +
+                          (dir / "run").string();
+  // Starts the run, waits until its loop runs (run.json says so), sends the signal and reports the exit code.
+  const std::string script = "(" + run + " > " + (dir / "log").string() + " 2>&1 & pid=$!; " +
+                             "for i in $(seq 600); do grep -q running " + (dir / "run" / "run.json").string() +
+                             " 2>/dev/null && break; sleep 0.1; done; sleep 0.5; kill -" + signal +
+                             " $pid; wait $pid; echo exit=$?)";
+  const auto r = run_command(script);
+  EXPECT_NE(r.output.find("exit=" + std::to_string(expected_exit)), std::string::npos)
+      << r.output << read_file(dir / "log");
+  const auto j = nlohmann::json::parse(read_file(dir / "run" / "run.json"));
+  EXPECT_EQ(j["status"], "interrupted");
+  EXPECT_NE(j["message"].get<std::string>().find(std::string("interrupted by SIG") + signal), std::string::npos);
+  EXPECT_GE(j["snapshots"].get<int>(), 2);  // the first and the final one
+  EXPECT_NO_THROW(tools::read_checkpoint(dir / "run"));
+  // The checkpoint continues: a short resume to check it opens (end_time stays 30 s, so stop it again at once).
+  const double t = j["simulated_time"].get<double>();
+  const auto resumed = run_command(slide_binary() + " run --resume " + (dir / "run").string() +
+                                   " --quiet --threads 1 --stop-at " + std::to_string(t + 0.005));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+  fs::remove_all(dir);
+}
+
+TEST(Restart, SigtermLeavesACheckpointAndAFinalSnapshotAndExits143) { check_signal("sigterm", "TERM", 143); }
+TEST(Restart, SigintLeavesACheckpointAndAFinalSnapshotAndExits130) { check_signal("sigint", "INT", 130); }
+
+// A stopped dam break to refuse things about.
+fs::path stopped_run(const fs::path& dir) {
+  const auto r = run_command(slide_run(kDamBreak + " " + kDamBreakSets + " --threads 1 --stop-at 0.01 --out " +
+                                       (dir / "run").string()));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return dir / "run";
+}
+
+TEST(Restart, AMissingOrDamagedCheckpointIsRefused) {
+  const auto dir = fresh_directory("restart_refused");
+  auto r = run_command(slide_binary() + " run --resume " + (dir / "nothing").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no checkpoint in"), std::string::npos) << r.output;
+
+  const fs::path run = stopped_run(dir);
+  std::string bytes = read_file(run / "checkpoint.bin");
+  bytes[bytes.size() / 2] ^= 1;
+  write_file(run / "checkpoint.bin", bytes);
+  r = run_command(slide_binary() + " run --resume " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is damaged"), std::string::npos) << r.output;
+  write_file(run / "checkpoint.bin", bytes.substr(0, bytes.size() / 3));
+  r = run_command(slide_binary() + " run --resume " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is damaged"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
+TEST(Restart, ACheckpointOfAnotherVersionIsRefused) {
+  const auto dir = fresh_directory("restart_version");
+  const fs::path run = stopped_run(dir);
+  tools::Checkpoint c = tools::read_checkpoint(run);
+  c.header.version = "0.0.1";
+  tools::write_checkpoint(run, c);
+  const auto r = run_command(slide_binary() + " run --resume " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("written by slide 0.0.1"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
+TEST(Restart, ACheckpointOfAnotherSceneIsRefused) {
+  const auto dir = fresh_directory("restart_scene");
+  const fs::path run = stopped_run(dir);
+  const std::string before = read_file(run / "gauges.csv");
+  const auto r = run_command(slide_binary() + " run " + kDamBreak + " " + kDamBreakSets +
+                             " --set particle_spacing=0.005715 --resume " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("belongs to another scene"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("particle_spacing"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(run / "gauges.csv"), before);  // nothing written
+  // The same scene and --set are accepted.
+  const auto same = run_command(slide_binary() + " run " + kDamBreak + " " + kDamBreakSets + " --resume " +
+                                run.string() + " --quiet --stop-at 0.02");
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace slide::testing
