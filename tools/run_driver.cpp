@@ -290,7 +290,7 @@ class CheckpointObserver : public StepObserver<2> {
       : run_(run), outputs_(outputs), sim_(sim), interval_(run.scene->output.checkpoint_interval),
         next_(interval_ > 0 ? interval_ : std::numeric_limits<double>::infinity()) {}
   void after_step(Simulation<2>& sim, double) override {
-    if (sim.time() < next_ - 1e-12 * std::max(1.0, next_)) return;
+    if (interval_ <= 0.0 || sim.time() < next_ - 1e-12 * std::max(1.0, next_)) return;
     next_ += interval_;
     if (sim.time() >= next_) next_ = sim.time() + interval_;
     write();
@@ -401,6 +401,10 @@ int run_command(const RunArguments& args) {
     write_file_atomically(out / "run.json", j.dump(2) + "\n");
   };
 
+  // A write past a file-size limit (ulimit -f) fails with EFBIG instead of killing the process, so that it is
+  // reported like a full disk.
+  std::signal(SIGXFSZ, SIG_IGN);
+  LastGoodState last_good(sim);
   try {
     if (!run->resumed_from) outputs.write_initial();
     write_run_json("running", "", json::object());
@@ -409,7 +413,6 @@ int run_command(const RunArguments& args) {
     auto previous_sigterm = std::signal(SIGTERM, on_stop_signal);
     interrupted = 0;
     InterruptWatch interrupt(args.stop_at);
-    LastGoodState last_good(sim);
     ProgressLine progress(loop_start, scene->end_time);
     std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
     if (!args.quiet) observers.push_back(&progress);
@@ -462,7 +465,21 @@ int run_command(const RunArguments& args) {
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\rslide: " << msg << "\n";
     return 0;
   } catch (const std::exception& e) {
-    std::cerr << "\nslide: error: " << e.what() << "\n";
+    // A failed write (a full disk, a file-size limit) or anything unexpected. Every file written before is whole
+    // (each is written under a temporary name and renamed); the last good state is written too where it still can be.
+    const std::string msg = fmt::format("stopped at t = {:.6g} s (step {}) by an error: {}; the files written before "
+                                        "are intact",
+                                        sim.time(), sim.step_count(), e.what());
+    std::cerr << "\nslide: error: " << msg << "\n";
+    try {
+      outputs.write_snapshot(last_good.particles, last_good.time, last_good.step);
+      outputs.flush();
+    } catch (const std::exception&) {
+    }
+    try {
+      write_run_json("failed", msg, json::object());
+    } catch (const std::exception&) {
+    }
     return 1;
   }
 }

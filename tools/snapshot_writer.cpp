@@ -241,7 +241,12 @@ void SnapshotWriter::write(double time, long step, const SnapshotFields& f) {
     write_master();
     write_xdmf();
   } catch (...) {
+    // The series stays as it was: the master file is written again without this snapshot where it still can be.
     entries_.pop_back();
+    try {
+      write_master();
+    } catch (const std::exception&) {
+    }
     throw;
   }
 }
