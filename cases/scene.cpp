@@ -48,6 +48,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   build_slides_and_bodies(b);
   fill_fluid_regions(b);
   check_overlaps(b);
+  check_fluid_contained(b);
   choose_sound_speed(b);
   start_hydrostatic(b);
   set_domain(b);

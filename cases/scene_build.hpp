@@ -93,6 +93,7 @@ void build_walls(SceneBuild& b);               // build_walls.cpp
 void build_slides_and_bodies(SceneBuild& b);   // build_bodies.cpp
 void fill_fluid_regions(SceneBuild& b);        // build_fluid_regions.cpp
 void check_overlaps(SceneBuild& b);            // build_fluid_regions.cpp
+void check_fluid_contained(SceneBuild& b);     // check_fluid_contained.cpp
 void choose_sound_speed(SceneBuild& b);        // build_initial_state.cpp
 void start_hydrostatic(SceneBuild& b);         // build_initial_state.cpp
 void set_domain(SceneBuild& b);                // build_initial_state.cpp

@@ -72,4 +72,18 @@ double area_below(const std::vector<rigid::Vec2>& v, double level) {
   return clipped.size() < 3 ? 0.0 : std::abs(rigid::signed_area(clipped));
 }
 
+// p + t d = a + s (b - a) with t >= 0 and s in [0, 1], solved by Cramer's rule; a segment parallel to the ray is
+// met only when it lies on it.
+bool ray_meets_segment(const Vec<2>& p, const Vec<2>& d, const Vec<2>& a, const Vec<2>& b) {
+  const Vec<2> e = b - a, w = a - p;
+  const double det = e[0] * d[1] - e[1] * d[0];  // cross(e, d)
+  if (det == 0.0) {
+    if (w[0] * d[1] - w[1] * d[0] != 0.0) return false;  // parallel, off the ray's line
+    return w.dot(d) >= 0.0 || (b - p).dot(d) >= 0.0;
+  }
+  const double t = (e[0] * w[1] - e[1] * w[0]) / det;  // cross(e, w) / cross(e, d)
+  const double s = (d[0] * w[1] - d[1] * w[0]) / det;  // cross(d, w) / cross(e, d)
+  return t >= 0.0 && s >= 0.0 && s <= 1.0;
+}
+
 }  // namespace slide::cases

@@ -36,6 +36,9 @@ double signed_face_distance(const std::vector<FaceSegment>& faces, const Vec<2>&
 // Bounding box of the face segments (empty list: lo = +inf, hi = -inf).
 void face_bounds(const std::vector<FaceSegment>& faces, Vec<2>& lo, Vec<2>& hi);
 
+// Whether the ray from p along direction d (not zero) meets the segment a-b.
+bool ray_meets_segment(const Vec<2>& p, const Vec<2>& d, const Vec<2>& a, const Vec<2>& b);
+
 // Area of the part of a convex polygon below a level (Sutherland-Hodgman against one half-plane).
 double area_below(const std::vector<rigid::Vec2>& v, double level);
 

@@ -220,7 +220,11 @@ Schema checks_schema() {
                 {{"max_number_density_ratio",
                   S::number("n / n0 above this is a number-density collapse", "", 1.5, 1.0, inf, true, false)},
                  {"max_speed_over_c0",
-                  S::number("a fluid speed above this many c0 is a blow-up", "", 1.0, 0.0, inf, true, false)}},
+                  S::number("a fluid speed above this many c0 is a blow-up", "", 1.0, 0.0, inf, true, false)},
+                 {"allow_uncontained_fluid",
+                  S::boolean("accept fluid with no wall or body below it along gravity (it falls out of the domain "
+                             "and is taken out of the run); without it such a scene is refused on its region",
+                             false)}},
                 false);
 }
 

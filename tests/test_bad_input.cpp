@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "cases/scene_geometry.hpp"
 #include "tests/cli_helpers.hpp"
 
 namespace slide::testing {
@@ -82,6 +83,40 @@ TEST(BadInput, ASceneThatDoesNotFitTheMemoryIsRefused) {
   expect_refused(run_command(check + " --set particle_spacing=1e-6"), {"particle_spacing", "2^32 - 1"});
   expect_refused(run_command("SLIDE_MEMORY_LIMIT=lots " + check), {"SLIDE_MEMORY_LIMIT"});
   EXPECT_EQ(run_command("SLIDE_MEMORY_LIMIT=1G " + check).exit_code, 0);
+}
+
+TEST(BadInput, FluidThatNothingHoldsIsRefusedOnItsRegionUnlessAllowed) {
+  const auto dir = fresh_directory("uncontained");
+  // The small scene's tank, with a second column of water beside it, over nothing.
+  std::string scene = kGoodScene;
+  scene.replace(scene.find("regions: [{type: rectangle, min: [0, 0], max: [0.2, 0.2]}]"),
+                std::string("regions: [{type: rectangle, min: [0, 0], max: [0.2, 0.2]}]").size(),
+                "regions: [{type: rectangle, min: [0, 0], max: [0.2, 0.2]}, "
+                "{type: rectangle, min: [0.8, 0.1], max: [0.9, 0.2]}]");
+  write_file(dir / "s.yaml", scene);
+  const auto r = run_command(slide_binary() + " run " + (dir / "s.yaml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("fluid.regions[1]: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("have no wall or body below them along gravity"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("checks.allow_uncontained_fluid"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  const auto allowed = run_command(slide_binary() + " check " + (dir / "s.yaml").string() +
+                                   " --set checks.allow_uncontained_fluid=true");
+  EXPECT_EQ(allowed.exit_code, 0) << allowed.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SceneGeometry, ARayMeetsASegmentOnlyAheadOfItAndWithinItsEnds) {
+  using cases::ray_meets_segment;
+  const Vec<2> down(0, -9.81);
+  EXPECT_TRUE(ray_meets_segment(Vec<2>(0.5, 1), down, Vec<2>(0, 0), Vec<2>(1, 0)));
+  EXPECT_TRUE(ray_meets_segment(Vec<2>(1, 1), down, Vec<2>(0, 0), Vec<2>(1, 0)));     // at the end
+  EXPECT_FALSE(ray_meets_segment(Vec<2>(1.01, 1), down, Vec<2>(0, 0), Vec<2>(1, 0)));  // past the end
+  EXPECT_FALSE(ray_meets_segment(Vec<2>(0.5, -1), down, Vec<2>(0, 0), Vec<2>(1, 0)));  // behind the ray
+  EXPECT_TRUE(ray_meets_segment(Vec<2>(0.5, 2), down, Vec<2>(0, 0), Vec<2>(1, 1)));    // a slope, at y = 0.5
+  EXPECT_TRUE(ray_meets_segment(Vec<2>(0, 2), down, Vec<2>(0, 0), Vec<2>(0, 1)));      // along a vertical wall
+  EXPECT_FALSE(ray_meets_segment(Vec<2>(0, 2), down, Vec<2>(0, 3), Vec<2>(0, 4)));     // behind, on its line
+  EXPECT_FALSE(ray_meets_segment(Vec<2>(0.5, 2), down, Vec<2>(0, 0), Vec<2>(0, 1)));   // parallel, off the line
 }
 
 }  // namespace
