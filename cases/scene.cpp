@@ -1,36 +1,14 @@
-// Reading a scene file, and building a simulation from a resolved scene as a list of named steps (each in its own
-// file under cases/, sharing a SceneBuild: cases/scene_build.hpp).
+// Building a simulation from a resolved scene (cases/load_scene.cpp reads one) as a list of named steps (each in its
+// own file under cases/, sharing a SceneBuild: cases/scene_build.hpp).
 #include "cases/scene.hpp"
 
-#include <set>
 #include <stdexcept>
 
-#include "cases/duplicate_keys.hpp"
 #include "cases/scene_build.hpp"
 
 namespace slide::cases {
 
 SceneBuild::SceneBuild(const YAML::Node& resolved, const std::filesystem::path& dir) : r(resolved), scene_dir(dir) {}
-
-YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  YAML::Node raw;
-  try {
-    raw = YAML::LoadFile(file.string());
-  } catch (const YAML::BadFile&) {
-    throw SceneError("<file>", "cannot read scene file " + file.string());
-  } catch (const YAML::Exception& e) {
-    throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
-  }
-  if (!raw.IsMap()) throw SceneError("<root>", "a scene file must be a YAML mapping");
-  if (const auto d = find_duplicate_key(raw)) throw SceneError(d->path, duplicate_key_message(*d));
-  std::set<std::string> overridden;  // a key set twice on the command line is as ambiguous as twice in the file
-  for (const auto& o : overrides) {
-    const std::string path = o.substr(0, o.find('='));
-    if (!overridden.insert(path).second) throw SceneError("--set", "key " + path + " is set twice; keep one");
-    apply_override(raw, o);
-  }
-  return scene_schema().resolve(raw);
-}
 
 std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name,
                                    const std::filesystem::path& scene_dir, bool for_resume) {

@@ -119,6 +119,8 @@ const Schema& scene_schema();
 
 // Reads a scene file, applies --set overrides and checks it. Throws SceneError (exit 2) on any problem.
 YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+// The same from the file's text (cases/load_scene.cpp).
+YAML::Node load_scene_text(const std::string& text, const std::vector<std::string>& overrides);
 
 // Builds particles and options from a resolved scene. Throws SceneError for geometric problems (a region that
 // holds no particle, water overlapping a wall).

@@ -459,7 +459,7 @@ YAML::Node Schema::resolve(const YAML::Node& input, const std::string& path) con
       }
       YAML::Node out(YAML::NodeType::Map);
       for (const auto& [name, field] : s.fields) {
-        const auto it = std::find_if(given.begin(), given.end(), [&](const auto& g) { return g.first == name; });
+        const auto it = std::find_if(given.begin(), given.end(), [&name = name](const auto& g) { return g.first == name; });
         YAML::Node value = field.resolve(it == given.end() ? YAML::Node(YAML::NodeType::Undefined) : it->second,
                                          join(path, name));
         if (value.IsDefined()) out[name] = value;  // undefined: an optional map left absent

@@ -1,0 +1,41 @@
+// Reading a scene: the YAML text, duplicate keys refused, --set overrides applied, then checked and completed by the
+// schema. Nothing here builds particles; the fuzz target (tests/fuzz/) drives exactly this.
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "cases/duplicate_keys.hpp"
+#include "cases/scene.hpp"
+
+namespace slide::cases {
+
+YAML::Node load_scene_text(const std::string& text, const std::vector<std::string>& overrides) {
+  YAML::Node raw;
+  try {
+    raw = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
+  }
+  if (!raw.IsMap()) throw SceneError("<root>", "a scene file must be a YAML mapping");
+  if (const auto d = find_duplicate_key(raw)) throw SceneError(d->path, duplicate_key_message(*d));
+  std::set<std::string> overridden;  // a key set twice on the command line is as ambiguous as twice in the file
+  for (const auto& o : overrides) {
+    const std::string path = o.substr(0, o.find('='));
+    if (!overridden.insert(path).second) throw SceneError("--set", "key " + path + " is set twice; keep one");
+    apply_override(raw, o);
+  }
+  return scene_schema().resolve(raw);
+}
+
+YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file, std::ios::binary);
+  if (!std::filesystem::is_regular_file(file) || !in)
+    throw SceneError("<file>", "cannot read scene file " + file.string());
+  std::ostringstream text;
+  text << in.rdbuf();  // an empty file leaves text empty (and sets failbit on text, which is not an error here)
+  return load_scene_text(text.str(), overrides);
+}
+
+}  // namespace slide::cases
