@@ -1,5 +1,7 @@
 #include "tools/report.hpp"
 
+#include "tools/markup_escape.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -22,20 +24,6 @@ namespace {
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 std::string file_bytes(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::ostringstream s;
@@ -47,12 +35,12 @@ std::string file_bytes(const fs::path& file) {
 std::string figure(const fs::path& png, const std::string& caption) {
   if (!fs::exists(png)) return "";
   return fmt::format("<figure><img src=\"data:image/png;base64,{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n",
-                     base64(file_bytes(png)), escaped(caption), escaped(caption));
+                     base64(file_bytes(png)), markup_escaped(caption), markup_escaped(caption));
 }
 
 std::string row(const std::vector<std::string>& cells, const char* tag = "td") {
   std::string out = "<tr>";
-  for (const auto& c : cells) out += fmt::format("<{0}>{1}</{0}>", tag, escaped(c));
+  for (const auto& c : cells) out += fmt::format("<{0}>{1}</{0}>", tag, markup_escaped(c));
   return out + "</tr>\n";
 }
 
@@ -73,7 +61,7 @@ pre {{ background: #f6f6f6; padding: 0.5em; overflow-x: auto; font-size: 0.8em; 
 {1}<p style="color:#777">Written by slide {2} (slide report).</p>
 </body></html>
 )",
-                     escaped(title), body, SLIDE_VERSION);
+                     markup_escaped(title), body, SLIDE_VERSION);
 }
 
 json read_json(const fs::path& file) {
@@ -83,8 +71,8 @@ json read_json(const fs::path& file) {
 
 std::string run_body(const fs::path& dir) {
   const json run = read_json(dir / "run.json");
-  std::string body = fmt::format("<p><b>{}</b>: {}</p>\n", escaped(run.value("status", "?")),
-                                 escaped(run.value("message", "")));
+  std::string body = fmt::format("<p><b>{}</b>: {}</p>\n", markup_escaped(run.value("status", "?")),
+                                 markup_escaped(run.value("message", "")));
   body += "<h2>Cost</h2>\n<table>\n";
   const auto value = [&](const char* key) { return run.contains(key) && run[key].is_number() ? run[key].get<double>() : NAN; };
   body += row({"particles", run.contains("particles") ? run["particles"].dump() : ""});
@@ -125,7 +113,7 @@ std::string run_body(const fs::path& dir) {
     for (auto it = run["derived"].begin(); it != run["derived"].end(); ++it)
       body += row({"derived: " + it.key(), it.value().dump()});
   body += "</table>\n<h2>Scene (every key resolved)</h2>\n";
-  body += "<pre>" + escaped(run.contains("scene") ? run["scene"].dump(2) : "") + "</pre>\n";
+  body += "<pre>" + markup_escaped(run.contains("scene") ? run["scene"].dump(2) : "") + "</pre>\n";
   return body;
 }
 
@@ -139,8 +127,8 @@ std::string sweep_body(const fs::path& dir) {
   std::string counts;
   for (const auto& [o, n] : count) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, run_outcome_names.name(o));
   std::string body = fmt::format("<p>Base scene <code>{}</code>; varied: {}; {} runs ({}). Error measure: {}{}.</p>\n",
-                                 escaped(s.scene.string()), escaped(fmt::format("{}", fmt::join(s.varied_keys, ", "))),
-                                 results.size(), counts, escaped(std::string(error_measure_names.name(s.error.measure))),
+                                 markup_escaped(s.scene.string()), markup_escaped(fmt::format("{}", fmt::join(s.varied_keys, ", "))),
+                                 results.size(), counts, markup_escaped(std::string(error_measure_names.name(s.error.measure))),
                                  std::isfinite(s.error.threshold) ? fmt::format(", threshold {:g}", s.error.threshold) : "");
   body += "<h2>Recommendation</h2>\n";
   if (s.error.measure == ErrorMeasure::none || !std::isfinite(s.error.threshold)) {
@@ -151,7 +139,7 @@ std::string sweep_body(const fs::path& dir) {
       keys += fmt::format("{}{} = {}", keys.empty() ? "" : ", ", s.varied_keys[k], best->values[k]);
     body += fmt::format("<p>The cheapest run within the threshold: <b>{}</b> ({}), error {:.4g}, {:.4g} s to answer "
                         "({:.4g} particles, {:.3g} CPU seconds).</p>\n",
-                        escaped(best->name), escaped(keys), best->error, time_to_answer(*best), best->particles,
+                        markup_escaped(best->name), markup_escaped(keys), best->error, time_to_answer(*best), best->particles,
                         best->cpu_seconds);
   } else {
     body += "<p>No run met the threshold.</p>\n";

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "tools/atomic_file.hpp"
+#include "tools/markup_escape.hpp"
 
 namespace slide::tools {
 
@@ -153,21 +154,6 @@ constexpr FieldSpec kFieldSpecs[] = {
     {"density", "Scalar", "Float", 8, "kg/m^3"},  {"phase", "Scalar", "UChar", 1, "1"},
     {"kind", "Scalar", "UChar", 1, "1"},          {"id", "Scalar", "UInt", 4, "1"},
 };
-
-// Text safe inside an XML attribute value.
-std::string xml_escaped(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -370,7 +356,7 @@ void SnapshotWriter::write_xdmf() const {
                                  : std::string_view(spec.name) == "phase" ? legend_.phase_codes
                                                                           : std::string();
       if (!codes.empty())
-        fmt::format_to(out, "          <Information Name=\"codes\" Value=\"{}\"/>\n", xml_escaped(codes));
+        fmt::format_to(out, "          <Information Name=\"codes\" Value=\"{}\"/>\n", markup_escaped(codes));
       fmt::format_to(out,
                      "          <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" "
                      "Format=\"HDF\">{}:/{}</DataItem>\n"
