@@ -289,8 +289,9 @@ Schema velocity_profile_schema() {
 
 Schema domain_schema() {
   return S::map(
-      "box outside which a fluid particle is an instability; default: the particles' bounding "
-      "box enlarged by 4 re on every side and by half its height upwards",
+      "box a fluid particle may leave only through an open side (no wall): it is then taken out of the run and "
+      "counted in run.json's left_the_domain; one that passes through a wall is an instability; default: the "
+      "particles' bounding box enlarged by 4 re on every side and by half its height upwards",
       {{"min", S::vector("lower corner", "m", 2, std::nullopt)},
        {"max", S::vector("upper corner", "m", 2, std::nullopt)},
        {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must "

@@ -24,4 +24,5 @@ cd "$build_dir"
 # Leaks and undefined behaviour end the run like a crash; -timeout flags an input that hangs the loader.
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 ./fuzz_scene_loader -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
+  -dict="$source_dir/tests/fuzz/scene.dict" \
   -print_final_stats=1 "$corpus" "$seeds"
