@@ -274,12 +274,14 @@ void Simulation<D>::remove_particles_that_left() {
   auto& P = particles;
   const std::size_t n = P.real_count();
   const int first_bounded = options.periodic_x ? 1 : 0;
+  // A NaN coordinate compares false both ways: it is not "outside", and check() reports it.
+  const Vec<D> lo = options.domain_lo, hi = options.domain_hi;
   auto outside = [&](std::size_t i) {
-    const auto& x = P.position[i];
-    if (P.kind[i] != Kind::fluid || !x.allFinite()) return false;
-    for (int k = first_bounded; k < D; ++k)
-      if (x[k] < options.domain_lo[k] || x[k] > options.domain_hi[k]) return true;
-    return false;
+    if (P.kind[i] != Kind::fluid) return false;
+    const Vec<D>& x = P.position[i];
+    bool out = false;
+    for (int k = first_bounded; k < D; ++k) out = out || x[k] < lo[k] || x[k] > hi[k];
+    return out;
   };
   if (parallel_max(n, 0.0, [&](std::size_t i) { return outside(i) ? 1.0 : 0.0; }) == 0.0) return;
   std::vector<std::size_t> leaving;
