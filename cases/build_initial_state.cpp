@@ -155,8 +155,8 @@ void settle(SceneBuild& b) {
 void lift_gates(SceneBuild& b) {
   if (b.gate_ids.empty()) return;
   Particles<2>& P = b.particles();
-  std::vector<char> is_gate(P.size(), 0);
-  for (const std::uint32_t id : b.gate_ids) is_gate[id] = 1;  // ids are creation ranks, 0 .. size() - 1
+  std::vector<char> is_gate(P.id_end(), 0);
+  for (const std::uint32_t id : b.gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
   P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });
   b.scene->gate_particles = b.gate_ids.size();
   b.scene->wall_count = b.scene->dummy_count = b.scene->fluid_count = 0;

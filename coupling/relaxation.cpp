@@ -1,5 +1,7 @@
 #include "coupling/relaxation.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -67,6 +69,13 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   const AdvanceResult result = advance<2>(sim, duration, {&observer});
   if (result.instability)
     throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));
+  // Water at rest stays in the domain: what left it while settling flowed off an open edge.
+  if (const auto& left = sim.left_the_domain(); !left.empty())
+    throw std::runtime_error(fmt::format(
+        "{} fluid particle{} left the domain while the water settled (the first, {}, at t = {:.6g} s at ({:.6g}, "
+        "{:.6g})): it is not at rest; hold it with a wall, or start it without settling (initial_state: lattice)",
+        left.size(), left.size() == 1 ? "" : "s", left.front().id, left.front().time, left.front().position[0],
+        left.front().position[1]));
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
   for (std::size_t i = 0; i < P.real_count(); ++i) {

@@ -121,7 +121,7 @@ class Simulation {
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
 
-  // Checks the current state: non-finite values, particles out of the domain, number-density collapse, speed.
+  // Checks the current state: non-finite values, number-density collapse, speed.
   std::optional<Instability> check() const;
   // The fluid particle of lowest id whose move since the start of this step went through a wall, if any.
   std::optional<Instability> find_wall_crossing() const;

@@ -70,8 +70,14 @@ class WallCrossing {
   }
 
  private:
+  // The cell of p, clamped to one cell beyond the grid either way (NaN to the first): the cast stays defined for any
+  // coordinate, a blown-up one included.
   std::pair<int, int> cell_of(const Vec<2>& p) const {
-    return {static_cast<int>(std::floor((p[0] - lo_[0]) / cell_)), static_cast<int>(std::floor((p[1] - lo_[1]) / cell_))};
+    auto index = [&](double x, double lo, int n) {
+      const double c = std::floor((x - lo) / cell_);
+      return c >= -1.0 ? (c <= double(n) ? static_cast<int>(c) : n) : -1;
+    };
+    return {index(p[0], lo_[0], nx_), index(p[1], lo_[1], ny_)};
   }
 
   std::vector<WallFace> faces_;

@@ -157,9 +157,9 @@ double RigidWorld::mass(int i) const { return impl_->bodies.at(i).spec.mass; }
 double RigidWorld::inertia(int i) const { return impl_->bodies.at(i).spec.inertia; }
 
 void RigidWorld::set_held(int i, bool held) {
-  impl_->record(Op::set_held, {double(i), double(held)});
   auto& b = impl_->bodies.at(i);
-  if (b.spec.kinematic || b.held == held) return;
+  if (b.spec.kinematic || b.held == held) return;  // no change: nothing to record either
+  impl_->record(Op::set_held, {double(i), double(held)});
   b.held = held;
   b.rigid->setLinearFactor(held ? btVector3(0, 0, 0) : b.linear_factor);
   b.rigid->setAngularFactor(held ? btVector3(0, 0, 0) : b.angular_factor);
@@ -205,9 +205,9 @@ void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_veloci
 }
 
 void RigidWorld::apply_force(int i, const Vec2& force, double torque) {
-  impl_->record(Op::apply_force, {double(i), force[0], force[1], torque});
   auto& b = impl_->bodies.at(i);
   if (b.spec.kinematic) return;
+  impl_->record(Op::apply_force, {double(i), force[0], force[1], torque});
   b.rigid->applyCentralForce(v3(force));
   b.rigid->applyTorque(btVector3(0, 0, torque));
   b.force += force;

@@ -166,5 +166,23 @@ TEST(Restart, ACheckpointOfAnotherSceneIsRefused) {
   fs::remove_all(dir);
 }
 
+TEST(Restart, ANewRunInTheFolderRemovesTheOldCheckpointAndSetWithoutASceneIsRefused) {
+  const auto dir = fresh_directory("restart_stale");
+  const fs::path run = stopped_run(dir);
+  ASSERT_TRUE(fs::exists(run / "checkpoint.bin"));
+  // --set with --resume needs the scene file: the checkpoint's scene is continued as it was.
+  auto r = run_command(slide_binary() + " run --resume " + run.string() + " --set end_time=0.03");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--set needs the scene file too"), std::string::npos) << r.output;
+  // Another run into the same folder: the first run's checkpoint is not its to resume.
+  r = run_command(slide_run(kDamBreak + " --set end_time=0.005 --threads 1 --out " + run.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(run / "checkpoint.bin"));
+  r = run_command(slide_binary() + " run --resume " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no checkpoint in"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace slide::testing

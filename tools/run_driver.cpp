@@ -161,13 +161,15 @@ class LastGoodState : public StepObserver<2> {
 // One progress line on standard error, refreshed every second.
 class ProgressLine : public StepObserver<2> {
  public:
-  ProgressLine(Clock::time_point loop_start, double end_time) : start_(loop_start), end_(end_time) {}
+  // Rates and the ETA count from where this loop started (a resumed run's, the checkpoint).
+  ProgressLine(Clock::time_point loop_start, double end_time, const Simulation<2>& sim)
+      : start_(loop_start), end_(end_time), start_step_(sim.step_count()), start_time_(sim.time()) {}
   void after_step(Simulation<2>& sim, double dt) override {
     if (Clock::now() < next_) return;
     next_ = Clock::now() + std::chrono::seconds(1);
     const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
-    const double rate = double(sim.particles.real_count()) * sim.step_count() / wall;
-    const double eta = wall / sim.time() * (end_ - sim.time());
+    const double rate = double(sim.particles.real_count()) * double(sim.step_count() - start_step_) / wall;
+    const double eta = wall / (sim.time() - start_time_) * (end_ - sim.time());
     const std::size_t left = sim.left_the_domain().size();
     std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s{}   ",
                              sim.time(), end_, dt, rate / 1e6, eta,
@@ -178,6 +180,8 @@ class ProgressLine : public StepObserver<2> {
  private:
   Clock::time_point start_, next_ = Clock::now() + std::chrono::seconds(1);
   double end_;
+  long start_step_;
+  double start_time_;
 };
 
 // run.json's account of the particles taken out of the run (Simulation::left_the_domain): how many, and the first
@@ -259,6 +263,12 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
                              args.resume.string(), h.version, SLIDE_VERSION, h.version);
     return std::nullopt;
   }
+  if (args.scene.empty() && !args.overrides.empty()) {
+    std::cerr << "slide: --resume " << args.resume.string() << ": --set needs the scene file too (slide run SCENE "
+              << "--set ... --resume DIR), and they must be the checkpoint's: a resumed run continues its scene as it "
+                 "was\n";
+    return std::nullopt;
+  }
   const std::filesystem::path scene_file = args.scene.empty() ? std::filesystem::path(h.scene_file) : args.scene;
   if (!args.scene.empty()) {
     const auto resolved = resolve_or_report(args);
@@ -330,6 +340,9 @@ int run_command(const RunArguments& args) {
   const std::filesystem::path& out = run->out;
   auto& sim = *scene->simulation;
   std::filesystem::create_directories(out);
+  // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
+  std::error_code no_checkpoint;
+  if (!run->resumed_from) std::filesystem::remove(checkpoint_path(out), no_checkpoint);
   RunOutputs outputs(*scene, out, run->resumed_from.has_value());
   CheckpointObserver checkpoints(*run, outputs, sim);
   if (run->resumed_from) {
@@ -405,15 +418,17 @@ int run_command(const RunArguments& args) {
   // reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
   LastGoodState last_good(sim);
+  using Handler = void (*)(int);
+  Handler previous_sigint = SIG_DFL, previous_sigterm = SIG_DFL;
   try {
     if (!run->resumed_from) outputs.write_initial();
     write_run_json("running", "", json::object());
 
-    auto previous_sigint = std::signal(SIGINT, on_stop_signal);
-    auto previous_sigterm = std::signal(SIGTERM, on_stop_signal);
     interrupted = 0;
+    previous_sigint = std::signal(SIGINT, on_stop_signal);
+    previous_sigterm = std::signal(SIGTERM, on_stop_signal);
     InterruptWatch interrupt(args.stop_at);
-    ProgressLine progress(loop_start, scene->end_time);
+    ProgressLine progress(loop_start, scene->end_time, sim);
     std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
     if (!args.quiet) observers.push_back(&progress);
     const AdvanceResult result = advance<2>(sim, scene->end_time, observers);
@@ -467,12 +482,16 @@ int run_command(const RunArguments& args) {
   } catch (const std::exception& e) {
     // A failed write (a full disk, a file-size limit) or anything unexpected. Every file written before is whole
     // (each is written under a temporary name and renamed); the last good state is written too where it still can be.
+    std::signal(SIGINT, previous_sigint);
+    std::signal(SIGTERM, previous_sigterm);
     const std::string msg = fmt::format("stopped at t = {:.6g} s (step {}) by an error: {}; the files written before "
                                         "are intact",
                                         sim.time(), sim.step_count(), e.what());
     std::cerr << "\nslide: error: " << msg << "\n";
     try {
-      outputs.write_snapshot(last_good.particles, last_good.time, last_good.step);
+      // Only a state newer than the last snapshot: the series stays in time order.
+      if (last_good.time > outputs.last_snapshot_time()) outputs.write_snapshot(last_good.particles, last_good.time,
+                                                                                 last_good.step);
       outputs.flush();
     } catch (const std::exception&) {
     }

@@ -38,6 +38,11 @@ class RunOutputs : public StepObserver<2> {
   void write_snapshot(const Particles<2>& P, double time, long step);
   void flush();
   std::size_t snapshot_count() const { return snapshots_ ? snapshots_->count() : 0; }
+  // The time of the last snapshot written (-infinity before the first, or without snapshots).
+  double last_snapshot_time() const {
+    return snapshots_ && snapshots_->count() ? snapshots_->entries().back().time
+                                             : -std::numeric_limits<double>::infinity();
+  }
 
   // What the outputs have written so far and when they sample next (tools/checkpoint.hpp); flush() first, so that
   // the files on disk hold what the state says. Restoring takes the files back to that point.
