@@ -190,33 +190,22 @@ std::vector<RigidBodies::MeanForces> RigidBodies::take_mean_forces() {
 }
 
 namespace {
-void put_force(StateWriter& out, const BodyFluidForce& f) {
-  out.put(f.pressure);
-  out.put(f.viscous);
-  out.put(f.pressure_torque);
-  out.put(f.viscous_torque);
+// The fields of a force and of a pose, in checkpoint order, for StateWriter (const) and StateReader alike.
+template <class Stream, class Force>
+void transfer_force(Stream& s, Force& f) {
+  s.io(f.pressure);
+  s.io(f.viscous);
+  s.io(f.pressure_torque);
+  s.io(f.viscous_torque);
 }
-void get_force(StateReader& in, BodyFluidForce& f) {
-  in.get(f.pressure);
-  in.get(f.viscous);
-  in.get(f.pressure_torque);
-  in.get(f.viscous_torque);
-}
-void put_planar(StateWriter& out, const rigid::PlanarState& s) {
-  out.put(s.position[0]);
-  out.put(s.position[1]);
-  out.put(s.angle);
-  out.put(s.velocity[0]);
-  out.put(s.velocity[1]);
-  out.put(s.angular_velocity);
-}
-void get_planar(StateReader& in, rigid::PlanarState& s) {
-  in.get(s.position[0]);
-  in.get(s.position[1]);
-  in.get(s.angle);
-  in.get(s.velocity[0]);
-  in.get(s.velocity[1]);
-  in.get(s.angular_velocity);
+template <class Stream, class Pose>
+void transfer_pose(Stream& s, Pose& p) {
+  s.io(p.position[0]);
+  s.io(p.position[1]);
+  s.io(p.angle);
+  s.io(p.velocity[0]);
+  s.io(p.velocity[1]);
+  s.io(p.angular_velocity);
 }
 }  // namespace
 
@@ -224,14 +213,14 @@ void RigidBodies::save_state(StateWriter& out) const {
   out.put(world.journal());
   out.put<std::uint64_t>(size());
   for (std::size_t b = 0; b < size(); ++b) {
-    put_force(out, force[b]);
-    put_force(out, pending_[b]);
-    put_force(out, impulse_[b].fluid);
+    transfer_force(out, force[b]);
+    transfer_force(out, pending_[b]);
+    transfer_force(out, impulse_[b].fluid);
     out.put(impulse_[b].contact);
   }
   out.put(impulse_time_);
   out.put<std::uint64_t>(placed_state_.size());
-  for (const auto& s : placed_state_) put_planar(out, s);
+  for (const auto& s : placed_state_) transfer_pose(out, s);
   out.put(placed_time_);
   out.put(settling_);
 }
@@ -243,14 +232,14 @@ void RigidBodies::restore_state(StateReader& in) {
   if (in.get<std::uint64_t>() != size() || world.size() != size())
     throw std::runtime_error("the checkpoint's bodies are not the scene's");
   for (std::size_t b = 0; b < size(); ++b) {
-    get_force(in, force[b]);
-    get_force(in, pending_[b]);
-    get_force(in, impulse_[b].fluid);
+    transfer_force(in, force[b]);
+    transfer_force(in, pending_[b]);
+    transfer_force(in, impulse_[b].fluid);
     in.get(impulse_[b].contact);
   }
   in.get(impulse_time_);
   placed_state_.resize(in.get<std::uint64_t>());
-  for (auto& s : placed_state_) get_planar(in, s);
+  for (auto& s : placed_state_) transfer_pose(in, s);
   in.get(placed_time_);
   in.get(settling_);
 }

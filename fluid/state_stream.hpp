@@ -38,6 +38,11 @@ class StateWriter {
     put<std::uint64_t>(text.size());
     bytes_.insert(bytes_.end(), text.begin(), text.end());
   }
+  // The same name as StateReader::io, so that one template lists a type's fields for both directions.
+  template <class T>
+  void io(const T& value) {
+    put(value);
+  }
   const std::vector<char>& bytes() const { return bytes_; }
 
  private:
@@ -76,6 +81,10 @@ class StateReader {
     T value{};
     get(value);
     return value;
+  }
+  template <class T>
+  void io(T& value) {
+    get(value);
   }
   bool at_end() const { return at_ == bytes_.size(); }
 
