@@ -232,10 +232,10 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   ++limit_counts_[static_cast<int>(limit)];
   if (walls_checked)
     if (auto crossing = find_wall_crossing()) return crossing;
+  record_largest_compression();  // a collapse the check then reports is the run's largest compression
   // Checked before the leavers go, so that a particle that blew up on its way out is reported, not counted.
   if (auto bad = check()) return bad;
   remove_particles_that_left();
-  record_largest_compression();
   return std::nullopt;
 }
 
