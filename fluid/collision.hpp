@@ -34,9 +34,12 @@ inline Vec<D> collision_pair_change(std::size_t i, std::uint32_t j, const Partic
 template <int D>
 Vec<D> collision_velocity_change(std::size_t i, const Particles<D>& P, const NeighborList& nl, double distance,
                                  double restitution) {
-  Vec<D> du = Vec<D>::Zero();
+  // Accumulated in a local that is not the return value: as the named return value it lived in the caller's memory
+  // and every pair stored to it and loaded it back (measured: half of this function's time, perf annotate).
+  Vec<D> sum = Vec<D>::Zero();
   for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-    du += collision_pair_change<D>(i, *q, P, distance, restitution);
+    sum += collision_pair_change<D>(i, *q, P, distance, restitution);
+  const Vec<D> du = sum;
   return du;
 }
 
