@@ -121,10 +121,10 @@ void Simulation<D>::update_neighbors(bool force) {
   ++rebuilds_;
 }
 
-// Copies every real particle into its ghosts (nothing to do when not periodic).
+// Copies every real particle's motion into its ghosts (nothing to do when not periodic).
 template <int D>
 void Simulation<D>::sync_ghosts_now() {
-  if (particles.ghost_count() != 0) sync_ghosts(particles);
+  if (particles.ghost_count() != 0) sync_ghost_motion(particles);
 }
 
 // Periodic: each sub-stage computes the real particles, and its result is copied into the ghosts before the next
@@ -137,7 +137,7 @@ void Simulation<D>::compute_pressure() {
   using WP = WallPressure;
   if (options.wall_pressure == WP::mirror) {
     parallel_for(n, [&](std::size_t i) {
-      if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, options.dp);
+      if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp);
     });
     copy_to_ghosts(P, P.wall_fill);
     parallel_for(n, [&](std::size_t i) {
@@ -230,30 +230,45 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   time_ += dt;
   ++step_count_;
   ++limit_counts_[static_cast<int>(limit)];
-  if (walls_checked)
-    if (auto crossing = find_wall_crossing()) return crossing;
-  record_largest_compression();  // a collapse the check then reports is the run's largest compression
+  // What the end of a step looks for, in one pass (each was a pass of its own, 1.5-2 % of the step each).
+  const auto& P = particles;
+  const auto [crossed, worst, densest, left] = parallel_max_each<4>(
+      P.real_count(), {0.0, 0.0, 0.0, 0.0}, [&](std::size_t i) -> std::array<double, 4> {
+        return {walls_checked && face_crossed(i) >= 0 ? 1.0 : 0.0, static_cast<double>(problem_code(i)),
+                P.kind[i] == Kind::fluid ? P.number_density[i] : 0.0, outside_domain(i) ? 1.0 : 0.0};
+      });
+  if (crossed > 0.0) return wall_crossing_report();
+  record_largest_compression(densest);  // a collapse reported next is the run's largest compression
   // Checked before the leavers go, so that a particle that blew up on its way out is reported, not counted.
-  if (auto bad = check()) return bad;
-  remove_particles_that_left();
+  if (worst > 0.0) return problem_report(static_cast<int>(worst));
+  if (left > 0.0) remove_particles_that_left();
   return std::nullopt;
 }
 
+// The wall face fluid particle i's move in this step went through (fluid/wall_crossing.hpp), or -1.
 template <int D>
-std::optional<Instability> Simulation<D>::find_wall_crossing() const {
+int Simulation<D>::face_crossed(std::size_t i) const {
+  if constexpr (D != 2) {
+    return -1;
+  } else {
+    const auto& P = particles;
+    if (P.kind[i] != Kind::fluid || i >= position_at_step_start_.size()) return -1;
+    return wall_crossing.crossed(position_at_step_start_[i], P.position[i]);
+  }
+}
+
+// The crossing of lowest id (whatever the thread count), as an instability.
+template <int D>
+std::optional<Instability> Simulation<D>::wall_crossing_report() const {
   if constexpr (D != 2) {
     return std::nullopt;
   } else {
     const auto& P = particles;
-    const std::size_t n = std::min(P.real_count(), position_at_step_start_.size());
-    auto face_crossed = [&](std::size_t i) {
-      return P.kind[i] == Kind::fluid ? wall_crossing.crossed(position_at_step_start_[i], P.position[i]) : -1;
-    };
-    if (parallel_max(n, 0.0, [&](std::size_t i) { return face_crossed(i) >= 0 ? 1.0 : 0.0; }) == 0.0)
-      return std::nullopt;
-    std::size_t pick = n;  // the lowest id, whatever the thread count
+    const std::size_t n = P.real_count();
+    std::size_t pick = n;
     for (std::size_t i = 0; i < n; ++i)
       if (face_crossed(i) >= 0 && (pick == n || P.id[i] < P.id[pick])) pick = i;
+    if (pick == n) return std::nullopt;
     const WallFace& f = wall_crossing.face(face_crossed(pick));
     Instability s;
     s.time = time_;
@@ -269,41 +284,42 @@ std::optional<Instability> Simulation<D>::find_wall_crossing() const {
   }
 }
 
-// Fluid particles outside the domain's bounds left through an open side (find_wall_crossing has caught those that
-// went through a wall): they are recorded and taken out, and the neighbour list is built afresh without them.
-// Non-finite positions stay for check() to report.
+// A fluid particle outside the domain's bounds (along a periodic x, only the other axes bound it). A NaN coordinate
+// compares false both ways: it is not "outside", and the check reports it.
+template <int D>
+bool Simulation<D>::outside_domain(std::size_t i) const {
+  const auto& P = particles;
+  if (P.kind[i] != Kind::fluid) return false;
+  const Vec<D>& x = P.position[i];
+  bool out = false;
+  for (int k = options.periodic_x ? 1 : 0; k < D; ++k)
+    out = out || x[k] < options.domain_lo[k] || x[k] > options.domain_hi[k];
+  return out;
+}
+
+// Fluid particles outside the domain's bounds left through an open side (a move through a wall was reported before
+// this): they are recorded and taken out, and the neighbour list is built afresh without them.
 template <int D>
 void Simulation<D>::remove_particles_that_left() {
   auto& P = particles;
   const std::size_t n = P.real_count();
-  const int first_bounded = options.periodic_x ? 1 : 0;
-  // A NaN coordinate compares false both ways: it is not "outside", and check() reports it.
-  const Vec<D> lo = options.domain_lo, hi = options.domain_hi;
-  auto outside = [&](std::size_t i) {
-    if (P.kind[i] != Kind::fluid) return false;
-    const Vec<D>& x = P.position[i];
-    bool out = false;
-    for (int k = first_bounded; k < D; ++k) out = out || x[k] < lo[k] || x[k] > hi[k];
-    return out;
-  };
-  if (parallel_max(n, 0.0, [&](std::size_t i) { return outside(i) ? 1.0 : 0.0; }) == 0.0) return;
   std::vector<std::size_t> leaving;
   for (std::size_t i = 0; i < n; ++i)
-    if (outside(i)) leaving.push_back(i);
+    if (outside_domain(i)) leaving.push_back(i);
+  if (leaving.empty()) return;
   std::sort(leaving.begin(), leaving.end(), [&](std::size_t a, std::size_t b) { return P.id[a] < P.id[b]; });
   for (const std::size_t i : leaving)
     left_the_domain_.push_back({P.id[i], time_, std::vector<double>(P.position[i].data(), P.position[i].data() + D)});
+  std::vector<bool> drop(n, false);
+  for (const std::size_t i : leaving) drop[i] = true;
   if (options.periodic_x) remove_ghosts(P);
-  P.remove_keeping_ids([&](std::size_t i) { return i < n && outside(i); });
+  P.remove_keeping_ids([&](std::size_t i) { return i < n && drop[i]; });
   update_neighbors(true);
 }
 
+// n_max: the largest number density of any fluid particle after the step.
 template <int D>
-void Simulation<D>::record_largest_compression() {
-  const auto& P = particles;
-  const double n_max = parallel_max(P.real_count(), 0.0, [&](std::size_t i) {
-    return P.kind[i] == Kind::fluid ? P.number_density[i] : 0.0;
-  });
+void Simulation<D>::record_largest_compression(double n_max) {
   const double ratio = n_max / lattice.n0;
   if (ratio > largest_number_density_ratio_) {
     largest_number_density_ratio_ = ratio;
@@ -483,31 +499,40 @@ void Simulation<D>::move_bodies(double dt) {
   }
 }
 
+// Problem code of real particle i, most severe highest: 4 non-finite, 2 collapse, 1 speed, 0 none. Leaving the
+// domain is not one: through an open side it is a splash (remove_particles_that_left), through a wall
+// wall_crossing_report tells it.
+template <int D>
+int Simulation<D>::problem_code(std::size_t i) const {
+  const auto& P = particles;
+  const auto& x = P.position[i];
+  if (!x.allFinite() || !P.velocity[i].allFinite() || !std::isfinite(P.pressure[i]) ||
+      !std::isfinite(P.number_density[i]))
+    return 4;
+  if (P.kind[i] != Kind::fluid) return 0;
+  if (P.number_density[i] > options.max_number_density_ratio * lattice.n0) return 2;
+  const double u_max = options.max_speed_over_c0 * options.sound_speed;
+  if (P.velocity[i].squaredNorm() > u_max * u_max) return 1;
+  return 0;
+}
+
+// Real particles only (a ghost equals its source).
 template <int D>
 std::optional<Instability> Simulation<D>::check() const {
-  const auto& P = particles;
-  const double n_max = options.max_number_density_ratio * lattice.n0;
-  const double u_max = options.max_speed_over_c0 * options.sound_speed;
-  // Problem code per particle, most severe highest: 4 non-finite, 2 collapse, 1 speed. Real particles only (a ghost
-  // equals its source). Leaving the domain is not checked here: through an open side it is a splash, taken out by
-  // remove_particles_that_left, and through a wall find_wall_crossing reports it.
-  const std::size_t n = P.real_count();
-  auto code = [&](std::size_t i) -> int {
-    const auto& x = P.position[i];
-    if (!x.allFinite() || !P.velocity[i].allFinite() || !std::isfinite(P.pressure[i]) ||
-        !std::isfinite(P.number_density[i]))
-      return 4;
-    if (P.kind[i] != Kind::fluid) return 0;
-    if (P.number_density[i] > n_max) return 2;
-    if (P.velocity[i].squaredNorm() > u_max * u_max) return 1;
-    return 0;
-  };
-  const int worst = static_cast<int>(parallel_max(n, 0.0, [&](std::size_t i) { return double(code(i)); }));
+  const int worst = static_cast<int>(
+      parallel_max(particles.real_count(), 0.0, [&](std::size_t i) { return double(problem_code(i)); }));
   if (worst == 0) return std::nullopt;
-  // The reported particle: the lowest id with the most severe problem (independent of the thread count).
+  return problem_report(worst);
+}
+
+// The particle of lowest id with problem code `worst` (independent of the thread count), as an instability.
+template <int D>
+Instability Simulation<D>::problem_report(int worst) const {
+  const auto& P = particles;
+  const std::size_t n = P.real_count();
   std::size_t pick = n;
   for (std::size_t i = 0; i < n; ++i)
-    if (code(i) == worst && (pick == n || P.id[i] < P.id[pick])) pick = i;
+    if (problem_code(i) == worst && (pick == n || P.id[i] < P.id[pick])) pick = i;
   Instability s;
   s.time = time_;
   s.step = step_count_;

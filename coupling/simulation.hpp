@@ -123,8 +123,6 @@ class Simulation {
 
   // Checks the current state: non-finite values, number-density collapse, speed.
   std::optional<Instability> check() const;
-  // The fluid particle of lowest id whose move since the start of this step went through a wall, if any.
-  std::optional<Instability> find_wall_crossing() const;
 
   const NeighborList& neighbors() const { return list_; }
   const NeighborGrid<D>& grid() const { return grid_; }
@@ -158,11 +156,16 @@ class Simulation {
   long step_count_ = 0;
   std::array<long, time_step_limit_count> limit_counts_{};
   double largest_number_density_ratio_ = 1.0, largest_number_density_ratio_time_ = 0.0;
-  void record_largest_compression();
+  void record_largest_compression(double n_max);
+  int problem_code(std::size_t i) const;
+  Instability problem_report(int worst) const;
+  int face_crossed(std::size_t i) const;
+  std::optional<Instability> wall_crossing_report() const;
+  bool outside_domain(std::size_t i) const;
   NeighborGrid<D> grid_;
   NeighborList list_;
   std::vector<Vec<D>> position_at_build_;
-  std::vector<Vec<D>> position_at_step_start_;  // for find_wall_crossing; filled only when there are wall faces
+  std::vector<Vec<D>> position_at_step_start_;  // for face_crossed; filled only when there are wall faces
   std::vector<LeftParticle> left_the_domain_;
   std::vector<Vec<D>> scratch_;
   std::vector<Vec<D>> predictor_acceleration_;  // semi-implicit viscous stage: a - grad p / rho given to the solve

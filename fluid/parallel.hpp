@@ -4,6 +4,7 @@
 // thread, and reductions are either order-independent (max/min) or done serially over per-index values.
 #include <omp.h>
 
+#include <array>
 #include <cstddef>
 
 namespace slide {
@@ -30,6 +31,27 @@ double parallel_max(std::size_t n, double init, F&& f) {
   for (long i = 0; i < static_cast<long>(n); ++i) {
     const double v = f(static_cast<std::size_t>(i));
     if (v > result) result = v;
+  }
+  return result;
+}
+
+// The same for several maxima at once (component k of f(i) into component k of the result): one pass over the
+// particles where each maximum had its own.
+template <std::size_t K, class F>
+std::array<double, K> parallel_max_each(std::size_t n, const std::array<double, K>& init, F&& f) {
+  std::array<double, K> result = init;
+#pragma omp parallel if (static_cast<long>(n) >= parallel_threshold)
+  {
+    std::array<double, K> local = init;
+#pragma omp for schedule(dynamic, parallel_chunk) nowait
+    for (long i = 0; i < static_cast<long>(n); ++i) {
+      const std::array<double, K> v = f(static_cast<std::size_t>(i));
+      for (std::size_t k = 0; k < K; ++k)
+        if (v[k] > local[k]) local[k] = v[k];
+    }
+#pragma omp critical(slide_parallel_max_each)
+    for (std::size_t k = 0; k < K; ++k)
+      if (local[k] > result[k]) result[k] = local[k];
   }
   return result;
 }

@@ -45,8 +45,12 @@ double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const Ne
 // A fluid particle closer to the boundary particle than the lattice spacing (one that presses into the wall, wet or
 // dry) also raises the weight, to 1 at half a spacing: proximity = sum_f W(|x_f - x_w|; dp) / W(dp / 2; dp), so
 // the wall can never vanish in front of a particle that approaches it.
+// The image is a point, found through the grid; the particle's own neighbours within dp are in its list (its radius,
+// re + skin, is larger), walked in the grid's order, so the sum is the grid search's to the bit, for a third of its
+// candidates (the grid search was 6 % of the bench case, perf).
 template <int D>
-double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, double dp) {
+double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, const NeighborList& nl,
+                   double dp) {
   const double radius = 1.5 * dp;
   // Full neighbourhood on the lattice: the point itself and its 2 D nearest neighbours at dp; half of it.
   const double half_full = 0.5 * (1.0 + 2 * D * kernel_weight(dp, radius));
@@ -56,9 +60,10 @@ double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& 
     if (P.kind[f] == Kind::fluid) sum_w += kernel_weight(std::sqrt(r2), radius);
   });
   double proximity = 0.0;
-  grid.for_each_near(P.position[w], dp, P.position, [&](std::uint32_t f, double r2) {
-    if (P.kind[f] == Kind::fluid) proximity += kernel_weight(std::sqrt(r2), dp);
-  });
+  for (const std::uint32_t* q = nl.begin(w); q != nl.end(w); ++q) {
+    const double r2 = distance_squared<D>(P.position[*q], P.position[w]);
+    if (r2 < dp * dp && P.kind[*q] == Kind::fluid) proximity += kernel_weight(std::sqrt(r2), dp);
+  }
   return std::min(1.0, sum_w / half_full + proximity / kernel_weight(0.5 * dp, dp));
 }
 

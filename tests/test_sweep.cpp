@@ -91,8 +91,7 @@ TEST(SweepFile, MapPanelsAreAVariedKeyOrNone) {
 }
 
 // Four runs of the dam break at a/5 and a/10 (about a second each): the symmetric gradient completes, the standard
-// one (seed eq. 3) goes unstable; with a threshold of 8 % the a/5 run (front error 8.9 %) is `inaccurate`, the a/10
-// run (7.5 %) `completed` (measured at stop 20).
+// one (seed eq. 3) goes unstable; with a threshold of 8 % a completed run is `inaccurate` or `completed` by its error.
 TEST(Sweep, ATinyDamBreakSweepRunsResumesAndCollects) {
   const fs::path dir = fresh_directory("sweep_tiny");
   write_file(dir / "tiny.yaml", fmt::format(R"(scene: {}
@@ -116,10 +115,15 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
                                                 "note"}));
   ASSERT_EQ(t.rows.size(), 4u);
   const auto cell = [&](int row, const std::string& column) { return t.rows[row].at(t.column(column)); };
-  EXPECT_EQ(cell(0, "outcome"), "inaccurate");
-  EXPECT_NEAR(std::stod(cell(0, "error")), 0.0886, 0.002);
-  EXPECT_EQ(cell(2, "outcome"), "completed");
-  EXPECT_NEAR(std::stod(cell(2, "error")), 0.0747, 0.002);
+  // The completed runs' front errors are chaotic at the 1 % level: at a/10, changing c0 by 1e-7 of itself gave 7.3,
+  // 7.5, 7.5 and 9.0 % (stop 24, with the same binary). So the outcome must follow the error and the threshold, and
+  // the error lie in that band, rather than equal a figure measured once (a/5 measured 8.9 %, a/10 7.5 % at stop 20).
+  for (const int row : {0, 2}) {
+    const double error = std::stod(cell(row, "error"));
+    EXPECT_EQ(cell(row, "outcome"), error > 0.08 ? "inaccurate" : "completed") << error;
+    EXPECT_GT(error, 0.06);
+    EXPECT_LT(error, 0.11);
+  }
   for (const int row : {1, 3}) {
     EXPECT_EQ(cell(row, "outcome"), "unstable");
     EXPECT_GT(std::stod(cell(row, "failure_time")), 0.0);
@@ -169,17 +173,23 @@ error: {{measure: dam_break_front, reference: {}, threshold: 0.08}}
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_file(elsewhere / "results.csv"), read_file(out / "results.csv"));
 
-  // slide check --target-error E --with DIR: the cheapest run within E (run_001 is cheaper but 8.9 % off), and its
-  // cost scaled to the checked scene (dp a/20: twice as fine as run_003's a/10).
+  // slide check --target-error E --with DIR: the cheapest run within E, and its cost scaled to the checked scene.
+  // E just above the a/10 run's error: that run is within it, and the a/5 run (run_001, cheaper) only if its own
+  // error is no larger.
+  const double error_a5 = std::stod(cell(0, "error")), error_a10 = std::stod(cell(2, "error"));
+  const double target = error_a10 + 0.001;
+  const std::string cheapest = error_a5 <= target ? "run_001 (" : "run_003 (particle_spacing=0.005715 method.gradient=symmetric)";
   const std::string check = slide_binary() + " check " + dam_break_scene() + " --with " + out.string();
-  r = run_command(check + " --target-error 0.08");
+  r = run_command(check + fmt::format(" --target-error {:.6f}", target));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("cheapest within it: run_003 (particle_spacing=0.005715 method.gradient=symmetric)"),
-            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("cheapest within it: " + cheapest), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("this scene with those settings"), std::string::npos) << r.output;
   r = run_command(check + " --target-error 0.01");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("no run is within it; the smallest error measured is 0.07"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(fmt::format("no run is within it; the smallest error measured is {:.4g}",
+                                      std::min(error_a5, error_a10))),
+            std::string::npos)
+      << r.output;
   EXPECT_EQ(run_command(slide_binary() + " check " + dam_break_scene() + " --target-error 0.01").exit_code, 2);
 }
 
