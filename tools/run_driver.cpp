@@ -35,6 +35,12 @@ double process_cpu_seconds() {
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
+// The largest resident size this process has had so far, bytes (Linux reports ru_maxrss in KiB).
+double peak_resident_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return 1024.0 * double(u.ru_maxrss);
+}
 }  // namespace
 namespace {
 
@@ -407,6 +413,7 @@ int run_command(const RunArguments& args) {
     j["cpu_seconds"] = process_cpu_seconds();
     j["loop_cpu_seconds"] = process_cpu_seconds() - cpu_at_loop_start;
     j["particle_steps_per_second"] = loop_rate(wall);
+    j["peak_resident_bytes"] = peak_resident_bytes();
     j["snapshots"] = outputs.snapshot_count();
     j["left_the_domain"] = left_the_domain_json(sim);
     j["scene"] = to_json(scene->resolved);
