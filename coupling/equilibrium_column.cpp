@@ -26,8 +26,7 @@ class ColumnObserver : public StepObserver<2> {
 
   bool before_step(const Simulation<2>& sim) override { return !(sim.time() > t_min_ && speed < tolerance_); }
 
-  void after_step(Simulation<2>&, double dt) override {
-    last_dt = dt;
+  void after_step(Simulation<2>&, double) override {
     speed = 0.0;
     const std::size_t n = P_.real_count();
     for (std::size_t i = 0; i < n; ++i)
@@ -44,9 +43,8 @@ class ColumnObserver : public StepObserver<2> {
     if (P_.ghost_count() != 0) sync_ghosts(P_);
   }
 
-  std::vector<double> y, vy;  // per row, of the middle column
+  std::vector<double> y, vy;  // per row, of the first column
   double speed = std::numeric_limits<double>::infinity();  // largest row speed after the last step
-  double last_dt = 0.0;
 
  private:
   int row_of(std::uint32_t id) const { return static_cast<int>((id - first_fluid_) / columns_); }
@@ -71,11 +69,12 @@ ColumnRelaxation relax_column(const FluidOptions<2>& options, double density, do
   const double dp = options.dp, re = options.re_over_dp * dp;
   const double g = -options.gravity[1];
   // A periodic slab of the fewest columns the periodic ghosts allow (a period of at least twice the neighbour
-  // list's radius): it is the infinite lattice, so every column has a complete neighbourhood. Why: the slab of 4 re
-  // + 1 columns on a floor that it replaced computed 13 columns (and a floor twice as wide) to use one, and was 74 % of
-  // the bench case's setup (docs/profile.md); 5 columns do the same work.
+  // list's radius): it is the infinite lattice, so every column has a complete neighbourhood. Why: the slab it
+  // replaced, 4 ceil(re / dp) + 1 columns on a floor twice as wide (13 at the default re), computed all of them to use
+  // the middle one, and was 74 % of the bench case's setup (docs/profile.md); at the default re and skin, 5 columns.
   const double list_radius = re + options.skin_over_dp * dp;
-  const int columns = static_cast<int>(std::ceil(2.0 * list_radius / dp - 1e-9));
+  int columns = static_cast<int>(std::ceil(2.0 * list_radius / dp - 1e-9));
+  while (columns * dp < 2.0 * list_radius) ++columns;  // the period check has no tolerance (2 (re + skin) / dp whole)
 
   Simulation<2> sim;
   sim.options = options;
@@ -115,9 +114,11 @@ ColumnRelaxation relax_column(const FluidOptions<2>& options, double density, do
   out.y = column.y;
   out.time = sim.time();
   out.steps = sim.step_count();
-  out.column_dt = column.last_dt;
+  // The steps at rest, at the relaxation's Courant number and at the run's (the last step taken may have been cut
+  // short to land on the end time).
+  out.column_dt = sim.allowed_time_step().first;
   sim.options.cfl = options.cfl;
-  out.run_dt = sim.allowed_time_step().first;  // the run's step in this still water
+  out.run_dt = sim.allowed_time_step().first;
   if (result.instability) out.instability = "the equilibrium column went unstable: " + result.instability->reason;
   out.at_rest = !result.instability && column.speed < 1e-7 * std::sqrt(g * height);
   return out;
@@ -132,7 +133,9 @@ EquilibriumColumn equilibrium_column(const FluidOptions<2>& options, double dens
   // Relaxed at relaxation_cfl (or the run's Courant number, if larger), and again at the run's if that does not come to
   // rest. The gaps between rows do not depend on the step: in still water every fluid particle's predicted position
   // is x + dt^2 g, and the rows balance where the pressure at the predicted positions holds them. Only the bottom
-  // row's height over the floor does, by dt^2 g, which is corrected to the run's step below. Measured on the bench
+  // row's height over the floor does, by dt^2 g, which is corrected below to the step the run takes in still water
+  // as the column sees it (water's Courant and viscous limits, dt_max; a scene whose step another phase sets runs at
+  // a smaller one, as it did with the column before, and its bottom row starts up to dt^2 g off, 1e-5 dp or less). Measured on the bench
   // case (dp 0.01, 200 rows): 2047 steps instead of 5958 at 0.2, and every particle placed within 7.4e-7 dp of where
   // the relaxation at 0.2 puts it (the relaxation's own tolerance: it stops at row speeds of 1e-7 sqrt(g H)).
   ColumnRelaxation r = relax_column(options, density, viscosity, rows, std::max(relaxation_cfl, options.cfl));

@@ -7,7 +7,8 @@
 // ghost g is a copy of real particle ghost_source[g] with x shifted by ghost_shift[g] = +L or -L (L the period).
 // On every neighbour-list rebuild the simulation (coupling/simulation.cpp) removes them, wraps the real particles
 // into [x_min, x_max), re-sorts the real particles, and creates them afresh (add_ghosts); between rebuilds it copies
-// the sources into them (sync_ghosts, copy_to_ghosts) after every stage that changes what neighbours read. A real
+// into them what each stage changes that neighbours read (sync_ghost_motion after a move, copy_to_ghosts for one
+// array). A real
 // particle that drifts past an end between rebuilds keeps correct neighbours: it and the images near it have moved
 // less than half the skin since the list was built, the same argument as for any pair.
 #include <cmath>

@@ -40,5 +40,16 @@ TEST(EquilibriumColumn, RelaxingAtALargerStepGivesTheRowsOfTheRunsOwnStep) {
   EXPECT_GT((dt_relax * dt_relax - dt_run * dt_run) * 9.81, 100.0 * 2e-7 * o.dp);
 }
 
+// 2 (re + skin) / dp a whole number (2.7 + 0.3: 6 columns): rounding put twice the list radius one ulp above 6 dp, and
+// the periodic slab was refused as too short (found in review; the scene key method.kernel_radius allows 1.5-5).
+TEST(EquilibriumColumn, APeriodWhoseColumnCountIsWholeIsLongEnough) {
+  FluidOptions<2> o = column_options();
+  o.re_over_dp = 2.7;
+  o.skin_over_dp = 0.3;
+  const EquilibriumColumn c = equilibrium_column(o, 1000.0, 1e-3, 10);
+  EXPECT_EQ(c.gap_from_top.size(), 10u);
+  EXPECT_LT(c.residual_speed, 1e-7 * std::sqrt(9.81 * 0.1));
+}
+
 }  // namespace
 }  // namespace slide::testing
