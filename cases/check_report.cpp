@@ -110,7 +110,8 @@ std::string bodies(const Scene& scene) {
 
 double memory_estimate_mb(const Simulation<2>& sim) {
   // periodic ghosts included: they take memory
-  return run_memory_bytes(double(sim.particles.size()), sim.neighbors().capacity) / 1.0e6;
+  const double n = double(sim.particles.size());
+  return run_memory_bytes(n, double(sim.neighbors().total()) / std::max(1.0, n)) / 1.0e6;
 }
 
 // A phase's wall condition (fluid/basal_friction.hpp).

@@ -10,10 +10,14 @@
 
 namespace slide::cases {
 
-double run_memory_bytes(double n, std::size_t list_capacity) {
-  const double per_particle = 4 * sizeof(Vec<2>) + 5 * sizeof(double) + 2 + 4 + sizeof(Vec<2>) + 8;
-  const double list = n * (double(list_capacity) * sizeof(std::uint32_t) + 4);
-  return 2.0 * n * per_particle + n * sizeof(Vec<2>) * 2 + list;
+double run_memory_bytes(double n, double neighbours) {
+  // fluid/particles.hpp: six vectors, seven doubles, phase and kind, id and body
+  const double state = 6 * sizeof(Vec<2>) + 7 * sizeof(double) + 2 + 2 * sizeof(std::uint32_t);
+  // tools/run_outputs.hpp IdOrdered: position and velocity, pressure, number density and density, phase and kind, id
+  const double last_good = 2 * sizeof(Vec<2>) + 3 * sizeof(double) + 2 + sizeof(std::uint32_t);
+  const double working = 4 * sizeof(Vec<2>) + 2 * sizeof(std::uint32_t);
+  const double list = (neighbours + 2) * sizeof(std::uint32_t);  // fluid/neighbor_grid.hpp: first and count too
+  return n * (state + last_good + working + list);
 }
 
 namespace {

@@ -7,9 +7,10 @@
 
 namespace slide::cases {
 
-// Bytes a run holds for n particles whose neighbour lists have `list_capacity` slots: the particles twice (the state
-// and the last good state a failed run writes), two position copies (the neighbour list's skin test) and the list.
-double run_memory_bytes(double n, std::size_t list_capacity);
+// Bytes a run holds for n particles with `neighbours` listed neighbours each on average: the particles' arrays, the
+// last good state a failed run writes (what a snapshot holds), the step's working copies (positions at the list's
+// build and at the step's start, one vector scratch, the grid's two indices, a re-sort's temporary) and the list.
+double run_memory_bytes(double n, double neighbours);
 
 struct MemoryLimit {
   double bytes = 0.0;

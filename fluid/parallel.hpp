@@ -23,6 +23,13 @@ void parallel_for(std::size_t n, F&& f) {
   for (long i = 0; i < static_cast<long>(n); ++i) f(static_cast<std::size_t>(i));
 }
 
+// f(b) for b = 0 .. blocks - 1, one block to a thread at a time, in parallel when the `items` the blocks hold are many.
+template <class F>
+void parallel_for_blocks(std::size_t blocks, std::size_t items, F&& f) {
+#pragma omp parallel for schedule(dynamic, 1) if (static_cast<long>(items) >= parallel_threshold)
+  for (long b = 0; b < static_cast<long>(blocks); ++b) f(static_cast<std::size_t>(b));
+}
+
 // max over i of f(i), starting from init. Max is exact and associative, so the thread split does not matter.
 template <class F>
 double parallel_max(std::size_t n, double init, F&& f) {

@@ -25,7 +25,6 @@ void expect_list_matches_brute_force(std::size_t n, double radius) {
   NeighborGrid<D> grid(Vec<D>::Zero(), Vec<D>::Ones(), radius);
   grid.bin(x);
   NeighborList list;
-  list.capacity = 4;  // deliberately small: the builder must grow it
   build_neighbor_list(grid, x, radius, list);
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<std::uint32_t> expected, got(list.begin(i), list.end(i));
@@ -38,6 +37,33 @@ void expect_list_matches_brute_force(std::size_t n, double radius) {
 
 TEST(NeighborGrid, MatchesBruteForce2D) { expect_list_matches_brute_force<2>(2000, 0.05); }
 TEST(NeighborGrid, MatchesBruteForce3D) { expect_list_matches_brute_force<3>(2000, 0.12); }
+
+// Rebuilt on other points, with more particles than a parallel loop's threshold and only the first ones listed (as
+// periodic ghosts are not): each block keeps its storage, and no list keeps anything of the build before.
+TEST(NeighborGrid, RebuildingListsExactlyTheNewNeighboursInEveryBlock) {
+  const double radius = 0.02;
+  NeighborGrid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), radius);
+  NeighborList list;
+  for (unsigned seed : {3u, 4u}) {
+    const auto x = random_points<2>(seed == 3 ? 9000 : 7000, 1.0, seed);
+    const std::size_t listed = x.size() - 600;
+    grid.bin(x);
+    build_neighbor_list(grid, x, radius, list, listed);
+    ASSERT_EQ(list.blocks.size(), (x.size() + NeighborList::block_size - 1) / NeighborList::block_size);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      std::vector<std::uint32_t> expected, got(list.begin(i), list.end(i));
+      if (i < listed)
+        for (std::size_t j = 0; j < x.size(); ++j)
+          if (j != i && distance_squared<2>(x[i], x[j]) < radius * radius)
+            expected.push_back(static_cast<std::uint32_t>(j));
+      std::sort(got.begin(), got.end());
+      ASSERT_EQ(got, expected) << "seed " << seed << ", particle " << i;
+      total += expected.size();
+    }
+    EXPECT_EQ(list.total(), total);
+  }
+}
 
 TEST(NeighborGrid, SortedIndicesArePermutationGroupedByCell) {
   const auto x = random_points<2>(500, 1.0, 7);

@@ -13,11 +13,14 @@
 
 namespace slide::tools {
 
-IdOrdered::IdOrdered(const Particles<2>& P) {
+void IdOrdered::assign(const Particles<2>& P) {
   const std::size_t n = P.real_count();  // periodic ghosts are images, not particles of their own
   // By id; ids have gaps where particles left the domain (Particles::remove_keeping_ids).
   std::vector<std::uint32_t> index_of_id(P.id_end(), std::numeric_limits<std::uint32_t>::max());
   for (std::size_t i = 0; i < n; ++i) index_of_id[P.id[i]] = static_cast<std::uint32_t>(i);
+  for (auto* v : {&position, &velocity, &pressure, &number_density, &density}) v->clear();
+  for (auto* v : {&phase, &kind}) v->clear();
+  id.clear();
   position.reserve(2 * n);
   velocity.reserve(2 * n);
   for (auto* v : {&pressure, &number_density, &density}) v->reserve(n);
@@ -96,6 +99,10 @@ RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& o
 
 void RunOutputs::write_snapshot(const Particles<2>& P, double time, long step) {
   if (snapshots_) snapshots_->write(time, step, IdOrdered(P).fields());
+}
+
+void RunOutputs::write_snapshot(const IdOrdered& snapshot, double time, long step) {
+  if (snapshots_) snapshots_->write(time, step, snapshot.fields());
 }
 
 // Gauges, the surge front and the velocity profile.

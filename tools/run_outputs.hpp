@@ -20,7 +20,10 @@ struct IdOrdered {
   std::vector<std::uint8_t> phase, kind;
   std::vector<std::uint32_t> id;
 
-  explicit IdOrdered(const Particles<2>& P);
+  IdOrdered() = default;
+  explicit IdOrdered(const Particles<2>& P) { assign(P); }
+  // Refills from P, reusing the arrays' storage (the last good state takes one every few steps).
+  void assign(const Particles<2>& P);
   SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
 };
 
@@ -36,6 +39,7 @@ class RunOutputs : public StepObserver<2> {
   void write_final();
 
   void write_snapshot(const Particles<2>& P, double time, long step);
+  void write_snapshot(const IdOrdered& snapshot, double time, long step);
   void flush();
   std::size_t snapshot_count() const { return snapshots_ ? snapshots_->count() : 0; }
   // The time of the last snapshot written (-infinity before the first, or without snapshots).
