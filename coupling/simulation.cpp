@@ -139,12 +139,15 @@ void Simulation<D>::compute_pressure() {
       if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp);
     });
     copy_to_ghosts(P, P.wall_fill);
-    parallel_for(n, [&](std::size_t i) {
-      P.number_density[i] = weighted_number_density_of<D>(i, P.position, P.wall_fill, list_, r_e);
-    });
-  } else {
-    parallel_for(n, [&](std::size_t i) { P.number_density[i] = number_density_of<D>(i, P.position, list_, r_e); });
   }
+  // The pair weights are kept for the pressure gradient at these same positions (correct_with_pressure_gradient).
+  pair_weights_.shape_like(list_);
+  const std::vector<double>* fill = options.wall_pressure == WP::mirror ? &P.wall_fill : nullptr;
+  parallel_for(n, [&](std::size_t i) {
+    P.number_density[i] =
+        number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i));
+  });
+  pair_weights_.mark_taken_at(step_count_);
   copy_to_ghosts(P, P.number_density);
   const double surface_n = options.free_surface_beta * lattice.n0;
   parallel_for(n, [&](std::size_t i) {
@@ -449,9 +452,12 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
   const GradientModel model = options.gradient;
   const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
   const std::size_t n = P.real_count();
+  // Taken by compute_pressure in this step, at these positions (no stage moves a particle in between).
+  const bool weights_taken = pair_weights_.taken_at(step_count_);
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
-    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa);
+    const double* w = weights_taken ? pair_weights_.of(list_, i) : nullptr;
+    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa, w);
   });
   if constexpr (D == 2) {
     if (bodies_) bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());

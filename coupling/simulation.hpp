@@ -22,6 +22,7 @@
 #include "fluid/kernel.hpp"
 #include "fluid/lattice.hpp"
 #include "fluid/neighbor_grid.hpp"
+#include "fluid/pair_weights.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/phase.hpp"
 #include "fluid/state_stream.hpp"
@@ -164,6 +165,7 @@ class Simulation {
   bool outside_domain(std::size_t i) const;
   NeighborGrid<D> grid_;
   NeighborList list_;
+  PairWeights pair_weights_;  // of the predicted positions: compute_pressure takes them, the gradient reads them
   std::vector<Vec<D>> position_at_build_;
   std::vector<Vec<D>> position_at_step_start_;  // for face_crossed; filled only when there are wall faces
   std::vector<LeftParticle> left_the_domain_;

@@ -72,12 +72,11 @@ double neighborhood_min_pressure(std::size_t i, const Particles<D>& P, const Nei
   return p_ref;
 }
 
-// One neighbour's term of the W / r^2 models (the sum below times d / n0 is grad p_i); r2 = |r_ij|^2 < re^2.
+// One neighbour's term of the W / r^2 models (the sum below times d / n0 is grad p_i), w = W(r_ij) / r_ij^2.
 template <int D, GradientModel M>
-inline Vec<D> pressure_pair_term(std::size_t i, std::uint32_t j, const Vec<D>& rij, double r2, const Particles<D>& P,
-                                 double re, double p_ref) {
+inline Vec<D> pressure_pair_term_w(std::size_t i, std::uint32_t j, const Vec<D>& rij, double w, const Particles<D>& P,
+                                   double p_ref) {
   const auto& p = P.pressure;
-  const double w = kernel_weight(std::sqrt(r2), re) / r2;
   if constexpr (M == GradientModel::symmetric) {
     if (P.kind[j] == Kind::fluid) return ((p[i] + p[j]) * w) * rij;
     const Vec<D>& n = P.wall_normal[j];
@@ -86,6 +85,13 @@ inline Vec<D> pressure_pair_term(std::size_t i, std::uint32_t j, const Vec<D>& r
   } else {
     return ((p[j] - p_ref) * w) * rij;
   }
+}
+
+// The same from r2 = |r_ij|^2 < re^2.
+template <int D, GradientModel M>
+inline Vec<D> pressure_pair_term(std::size_t i, std::uint32_t j, const Vec<D>& rij, double r2, const Particles<D>& P,
+                                 double re, double p_ref) {
+  return pressure_pair_term_w<D, M>(i, j, rij, kernel_weight(std::sqrt(r2), re) / r2, P, p_ref);
 }
 
 template <int D, GradientModel M>
@@ -101,6 +107,25 @@ Vec<D> pressure_gradient_of(std::size_t i, const Particles<D>& P, const Neighbor
     const double r2 = rij.squaredNorm();
     if (r2 >= re2) continue;
     g += pressure_pair_term<D, M>(i, j, rij, r2, P, re, p_ref);
+  }
+  return (D / n0) * g;
+}
+
+// The same from the kernel weights the number density kept at these positions (fluid/pair_weights.hpp; w[k]: W of
+// the k-th listed neighbour, 0 beyond re): no square root. W / r^2 and the sum's order are those above, so the result
+// is bit-identical.
+template <int D, GradientModel M>
+Vec<D> pressure_gradient_from_weights(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
+                                      const double* w) {
+  const auto& x = P.position;
+  double p_ref = P.pressure[i];
+  if constexpr (M == GradientModel::pmin) p_ref = neighborhood_min_pressure<D>(i, P, nl, re);
+  Vec<D> g = Vec<D>::Zero();
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q, ++w) {
+    if (*w == 0.0) continue;
+    const std::uint32_t j = *q;
+    const Vec<D> rij = x[j] - x[i];
+    g += pressure_pair_term_w<D, M>(i, j, rij, *w / rij.squaredNorm(), P, p_ref);
   }
   return (D / n0) * g;
 }
@@ -167,9 +192,21 @@ Vec<D> pressure_gradient_pair(GradientModel m, std::size_t i, std::uint32_t j, c
   return Vec<D>::Zero();
 }
 
+// pair_weights: the kernel weights of i's listed pairs at these positions (fluid/pair_weights.hpp), or nullptr; the
+// W / r^2 models read them, the derivative models take their own.
 template <int D>
 Vec<D> pressure_gradient(GradientModel m, std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
-                         double n0, double kappa) {
+                         double n0, double kappa, const double* pair_weights = nullptr) {
+  if (pair_weights) {
+    switch (m) {
+      case GradientModel::standard:
+        return pressure_gradient_from_weights<D, GradientModel::standard>(i, P, nl, re, n0, pair_weights);
+      case GradientModel::pmin: return pressure_gradient_from_weights<D, GradientModel::pmin>(i, P, nl, re, n0, pair_weights);
+      case GradientModel::symmetric:
+        return pressure_gradient_from_weights<D, GradientModel::symmetric>(i, P, nl, re, n0, pair_weights);
+      default: break;
+    }
+  }
   switch (m) {
     case GradientModel::standard: return pressure_gradient_of<D, GradientModel::standard>(i, P, nl, re, n0);
     case GradientModel::pmin: return pressure_gradient_of<D, GradientModel::pmin>(i, P, nl, re, n0);

@@ -33,6 +33,24 @@ double weighted_number_density_of(std::size_t i, const std::vector<Vec<D>>& x, c
   return n;
 }
 
+// Either sum, keeping each listed neighbour's kernel weight W(|r_ij|) (0 beyond re) in w[0 .. count) for the pressure
+// gradient at the same positions (fluid/pair_weights.hpp). fill: the neighbours' weights, or nullptr for 1 each.
+// The terms and their order are those above, so the sums are bit-identical to them.
+template <int D>
+double number_density_keeping_weights(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>* fill,
+                                      const NeighborList& nl, double re, double* w) {
+  double n = 0.0;
+  const double re2 = re * re;
+  for (const std::uint32_t* p = nl.begin(i); p != nl.end(i); ++p, ++w) {
+    const double r2 = distance_squared<D>(x[*p], x[i]);
+    *w = 0.0;
+    if (r2 >= re2) continue;
+    *w = kernel_weight(std::sqrt(r2), re);
+    n += fill ? (*fill)[*p] * *w : *w;
+  }
+  return n;
+}
+
 template <int D>
 void compute_number_density(const std::vector<Vec<D>>& x, const NeighborList& nl, double re, std::vector<double>& n) {
   n.resize(x.size());

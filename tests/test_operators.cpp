@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "fluid/equation_of_state.hpp"
 #include "fluid/gradient.hpp"
 #include "fluid/laplacian.hpp"
 #include "fluid/lattice.hpp"
 #include "fluid/number_density.hpp"
+#include "fluid/pair_weights.hpp"
 #include "tests/lattice_block.hpp"
 
 namespace slide {
@@ -54,6 +56,51 @@ TEST(Operators, GradientOfLinearFieldExact3D) { expect_gradient_of_linear_field_
 // The hexagonal lattice's second moments are isotropic too, so every model is exact on it with its own n0 and kappa.
 TEST(Operators, GradientOfLinearFieldExactHexagonal) {
   expect_gradient_of_linear_field_exact<2>(LatticeKind::hexagonal);
+}
+
+// The pair weights the number density keeps (fluid/pair_weights.hpp) give the same number densities and, read by the
+// pressure gradient at the same positions, the same gradients, bit for bit: on disordered particles with a wall row
+// (normal split), filled boundary particles, and a list built with a skin (listed pairs beyond re have weight 0).
+TEST(Operators, KeptPairWeightsGiveBitIdenticalNumberDensityAndGradients) {
+  Lattice<2> L;
+  auto& P = L.particles;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.2 * L.dp, 0.2 * L.dp), fill(0.5, 1.0), p(-50.0, 900.0);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    P.position[i] += Vec<2>(jitter(rng), jitter(rng));
+    P.pressure[i] = p(rng);
+    if (P.position[i][1] < 0.5 * L.dp) {
+      P.kind[i] = Kind::wall;
+      P.wall_normal[i] = Vec<2>(0.0, 1.0);
+      P.wall_fill[i] = fill(rng);
+    }
+  }
+  NeighborGrid<2> grid(Vec<2>::Constant(-L.dp), Vec<2>::Constant((L.side + 2) * L.dp), L.re + 0.3 * L.dp);
+  grid.bin(P.position);
+  NeighborList list;
+  build_neighbor_list(grid, P.position, L.re + 0.3 * L.dp, list);
+  PairWeights weights;
+  weights.shape_like(list);
+  std::size_t beyond_re = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const std::vector<double>* no_fill = nullptr;
+    for (const std::vector<double>* f : {no_fill, static_cast<const std::vector<double>*>(&P.wall_fill)}) {
+      const double kept = number_density_keeping_weights<2>(i, P.position, f, list, L.re, weights.of(list, i));
+      const double plain = f ? weighted_number_density_of<2>(i, P.position, P.wall_fill, list, L.re)
+                             : number_density_of<2>(i, P.position, list, L.re);
+      ASSERT_EQ(kept, plain) << "particle " << i;
+    }
+    const double* w = weights.of(list, i);
+    for (std::size_t k = 0; k < list.count[i]; ++k) beyond_re += w[k] == 0.0;
+    for (GradientModel m : {GradientModel::standard, GradientModel::pmin, GradientModel::symmetric,
+                            GradientModel::variational, GradientModel::difference}) {
+      const Vec<2> read = pressure_gradient<2>(m, i, P, list, L.re, L.constants.n0, L.constants.kappa, w);
+      const Vec<2> taken = pressure_gradient<2>(m, i, P, list, L.re, L.constants.n0, L.constants.kappa);
+      ASSERT_EQ(read[0], taken[0]) << to_string(m) << " particle " << i;
+      ASSERT_EQ(read[1], taken[1]) << to_string(m) << " particle " << i;
+    }
+  }
+  EXPECT_GT(beyond_re, P.size());  // the skin lists pairs beyond re, whose kept weight is 0
 }
 
 template <int D>
