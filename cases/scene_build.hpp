@@ -76,7 +76,7 @@ struct SceneBuild {
   std::size_t boundary_count = 0;  // particles before the first fluid particle
   // Set by fill_fluid_regions.
   double still_level = -std::numeric_limits<double>::infinity();  // highest below_level level
-  std::vector<std::string> fluid_owner;  // the key (fluid.regions[k], bodies[k]) of fluid particle i - boundary_count
+  std::vector<std::string> fluid_owner;  // the key (fluid.regions[k], bodies[k]) of fluid particle i - boundary_count (freed after the checks that name particles)
   Vec<2> lo = Vec<2>::Zero(), hi = Vec<2>::Zero();  // bounding box of every particle as placed on the lattice
 
   FluidOptions<2>& options() { return sim->options; }

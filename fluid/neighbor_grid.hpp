@@ -117,6 +117,13 @@ struct NeighborList {
   }
 };
 
+// Storage for n elements and 1/16 more, so that the small changes from build to build rarely reallocate (a vector
+// that grows by itself may double).
+template <class T>
+void reserve_with_margin(std::vector<T>& v, std::size_t n) {
+  if (v.capacity() < n) v.reserve(n + n / 16);
+}
+
 // Builds the list of all j != i with |x_j - x_i| < radius from a grid already binned on x, in the grid's visiting
 // order (fixed, so every sum over a list is too). Only the first `listed` points get a list (the others, periodic
 // ghosts, are found as neighbours but have an empty list of their own); all of them by default.
@@ -130,15 +137,21 @@ void build_neighbor_list(const NeighborGrid<D>& grid, const std::vector<Vec<D>>&
   list.count.assign(n, 0);
   list.blocks.resize(std::max<std::size_t>(1, (n + bs - 1) / bs));  // a block's storage is kept from build to build
   parallel_for_blocks(list.blocks.size(), m, [&](std::size_t b) {
-    std::vector<std::uint32_t>& block = list.blocks[b];
-    block.clear();
+    // Found into the thread's own scratch, then copied: a block's storage is then its size (and a margin for later
+    // builds), not the up to twice that a growing vector holds.
+    thread_local std::vector<std::uint32_t> found;
+    found.clear();
     for (std::size_t i = b * bs; i < std::min(m, (b + 1) * bs); ++i) {
-      list.first[i] = static_cast<std::uint32_t>(block.size());
+      list.first[i] = static_cast<std::uint32_t>(found.size());
       grid.for_each_near(x[i], radius, x, [&](std::uint32_t j, double) {
-        if (j != i) block.push_back(j);
+        if (j != i) found.push_back(j);
       });
-      list.count[i] = static_cast<std::uint32_t>(block.size()) - list.first[i];
+      list.count[i] = static_cast<std::uint32_t>(found.size()) - list.first[i];
     }
+    std::vector<std::uint32_t>& block = list.blocks[b];
+    if (block.capacity() < found.size()) block = std::vector<std::uint32_t>();  // no copy of the old contents
+    reserve_with_margin(block, found.size());
+    block.assign(found.begin(), found.end());
   });
 }
 

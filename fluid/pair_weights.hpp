@@ -17,7 +17,10 @@ class PairWeights {
   // taken at any step.
   void shape_like(const NeighborList& nl) {
     blocks_.resize(nl.blocks.size());
-    for (std::size_t b = 0; b < nl.blocks.size(); ++b) blocks_[b].resize(nl.blocks[b].size());
+    for (std::size_t b = 0; b < nl.blocks.size(); ++b) {
+      reserve_with_margin(blocks_[b], nl.blocks[b].size());
+      blocks_[b].resize(nl.blocks[b].size());
+    }
     taken_at_step_ = -1;
   }
   double* of(const NeighborList& nl, std::size_t i) {
