@@ -107,7 +107,7 @@ void Simulation<D>::update_neighbors(bool force) {
   }
   // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again.
   grid_.bin(x);
-  particles.reorder(grid_.sorted_indices());
+  particles.reorder(grid_.sorted_indices(), scratch_);  // scratch_ is free between steps
   // Periodic: fresh ghosts behind the sorted real particles; they are binned and found as neighbours, but need no
   // list of their own (every stage computes real particles only and copies them into the ghosts).
   if (options.periodic_x) {

@@ -15,32 +15,34 @@ namespace slide::tools {
 
 void IdOrdered::assign(const Particles<2>& P) {
   const std::size_t n = P.real_count();  // periodic ghosts are images, not particles of their own
-  // By id; ids have gaps where particles left the domain (Particles::remove_keeping_ids).
+  for (auto* v : {&position, &velocity}) v->resize(2 * n);
+  for (auto* v : {&pressure, &number_density, &density}) v->resize(n);
+  for (auto* v : {&phase, &kind}) v->resize(n);
+  id.resize(n);
+  const auto put = [&](std::size_t slot, std::size_t i) {
+    for (int d = 0; d < 2; ++d) {
+      position[2 * slot + d] = P.position[i][d];
+      velocity[2 * slot + d] = P.velocity[i][d];
+    }
+    pressure[slot] = P.pressure[i];
+    number_density[slot] = P.number_density[i];
+    density[slot] = P.density[i];
+    phase[slot] = P.phase[i];
+    kind[slot] = static_cast<std::uint8_t>(P.kind[i]);
+    id[slot] = P.id[i];
+  };
+  // By id. Without gaps the ids are 0 .. n - 1 and each particle goes straight to its slot (the last good state
+  // takes this every few steps, and a temporary index each time fragmented the heap).
+  if (P.id_end() == n) {
+    for (std::size_t i = 0; i < n; ++i) put(P.id[i], i);
+    return;
+  }
+  // Ids have gaps where particles left the domain (Particles::remove_keeping_ids).
   std::vector<std::uint32_t> index_of_id(P.id_end(), std::numeric_limits<std::uint32_t>::max());
   for (std::size_t i = 0; i < n; ++i) index_of_id[P.id[i]] = static_cast<std::uint32_t>(i);
-  for (auto* v : {&position, &velocity, &pressure, &number_density, &density}) v->clear();
-  for (auto* v : {&phase, &kind}) v->clear();
-  id.clear();
-  position.reserve(2 * n);
-  velocity.reserve(2 * n);
-  for (auto* v : {&pressure, &number_density, &density}) v->reserve(n);
-  phase.reserve(n);
-  kind.reserve(n);
-  id.reserve(n);
-  for (std::uint32_t k = 0; k < index_of_id.size(); ++k) {
-    const std::uint32_t i = index_of_id[k];
-    if (i == std::numeric_limits<std::uint32_t>::max()) continue;
-    for (int d = 0; d < 2; ++d) {
-      position.push_back(P.position[i][d]);
-      velocity.push_back(P.velocity[i][d]);
-    }
-    pressure.push_back(P.pressure[i]);
-    number_density.push_back(P.number_density[i]);
-    density.push_back(P.density[i]);
-    phase.push_back(P.phase[i]);
-    kind.push_back(static_cast<std::uint8_t>(P.kind[i]));
-    id.push_back(k);
-  }
+  std::size_t slot = 0;
+  for (const std::uint32_t i : index_of_id)
+    if (i != std::numeric_limits<std::uint32_t>::max()) put(slot++, i);
 }
 
 namespace {
