@@ -195,9 +195,7 @@ std::size_t add_body_particles(SceneBuild& b, const std::vector<BoundaryPoint>& 
     const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, 0.0);
     P.wall_normal[i] = bp.normal;
     P.wall_depth[i] = bp.depth;
-    P.body[i] = body;
-    P.body_offset[i] = bp.position - c;
-    P.body_normal[i] = bp.normal;
+    P.attach_to_body(i, body, bp.position - c, bp.normal);
     b.boundary_owner.push_back(path);
   }
   return P.size() - first;

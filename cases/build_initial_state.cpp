@@ -26,7 +26,7 @@ void lower_free_bodies(SceneBuild& b, const std::vector<double>& body_shift) {
     if (body_shift[k] == 0.0 || b.bodies->motion[k].mode != BodyMotion::Mode::free) continue;
     b.bodies->world.translate(int(k), rigid::Vec2(0.0, body_shift[k]));
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.body[i] == int(k)) P.position[i][1] += body_shift[k];
+      if (P.body_of(i) == int(k)) P.position[i][1] += body_shift[k];
   }
 }
 

@@ -49,9 +49,10 @@ void RigidBodies::place_particles(Particles<2>& P, double time) {
   placed_state_ = s;
   placed_time_ = time;
   parallel_for(P.size(), [&](std::size_t i) {
-    const int b = P.body[i];
-    if (b < 0) return;
-    const Vec<2> r = rotate(P.body_offset[i], c[b], sn[b]);
+    const int f = P.body_frame[i];
+    if (f < 0) return;
+    const int b = P.body_frames.body[f];
+    const Vec<2> r = rotate(P.body_frames.offset[f], c[b], sn[b]);
     const auto& st = s[b];
     const double omega = st.angular_velocity;
     P.position[i] = Vec<2>(st.position[0], st.position[1]) + r;
@@ -59,7 +60,7 @@ void RigidBodies::place_particles(Particles<2>& P, double time) {
     P.velocity[i] = Vec<2>(st.velocity[0], st.velocity[1]) + omega * Vec<2>(-r[1], r[0]);
     // a = A + alpha x r + omega x (omega x r) = A + alpha (-r_y, r_x) - omega^2 r.
     P.acceleration[i] = linear_acceleration[b] + angular_acceleration[b] * Vec<2>(-r[1], r[0]) - (omega * omega) * r;
-    P.wall_normal[i] = rotate(P.body_normal[i], c[b], sn[b]);
+    P.wall_normal[i] = rotate(P.body_frames.normal[f], c[b], sn[b]);
   });
 }
 
@@ -69,7 +70,7 @@ void RigidBodies::accumulate(const Particles<2>& P, const std::vector<Vec<2>>& f
   std::vector<rigid::Vec2> centre(size());
   for (std::size_t b = 0; b < size(); ++b) centre[b] = world.state(int(b)).position;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const int b = P.body[i];
+    const int b = P.body_of(i);
     if (b < 0) continue;
     const Vec<2> arm = P.position[i] - Vec<2>(centre[b][0], centre[b][1]);
     auto& acc = pending_[b];
@@ -89,7 +90,7 @@ template <class PairForce>
 void RigidBodies::exchange(const Particles<2>& P, const NeighborList& nl, bool viscous, const PairForce& pair_force) {
   scratch_.assign(P.size(), Vec<2>::Zero());
   parallel_for(P.size(), [&](std::size_t j) {
-    if (P.body[j] < 0) return;
+    if (P.body_frame[j] < 0) return;
     Vec<2> f = Vec<2>::Zero();
     for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q)
       if (P.kind[*q] == Kind::fluid) f += pair_force(*q, static_cast<std::uint32_t>(j));

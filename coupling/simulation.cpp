@@ -143,20 +143,18 @@ void Simulation<D>::compute_pressure() {
   // The pair weights are kept for the pressure gradient at these same positions (correct_with_pressure_gradient).
   pair_weights_.shape_like(list_);
   const std::vector<double>* fill = options.wall_pressure == WP::mirror ? &P.wall_fill : nullptr;
-  parallel_for(n, [&](std::size_t i) {
-    P.number_density[i] =
-        number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i));
-  });
-  pair_weights_.mark_taken_at(step_count_);
-  copy_to_ghosts(P, P.number_density);
   const double surface_n = options.free_surface_beta * lattice.n0;
+  // A fluid particle's pressure follows from its own number density (seed eq. 7): in the same pass.
   parallel_for(n, [&](std::size_t i) {
+    const double n_i = number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i));
+    P.number_density[i] = n_i;
     if (P.kind[i] != Kind::fluid) return;
-    const double n = P.number_density[i];
-    double p = n < surface_n ? 0.0 : eos.pressure(n, P.density[i]);
+    double p = n_i < surface_n ? 0.0 : eos.pressure(n_i, P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
+  pair_weights_.mark_taken_at(step_count_);
+  copy_to_ghosts(P, P.number_density);
   copy_to_ghosts(P, P.pressure);
   if (options.surface_pressure == SurfacePressure::extrapolated) {
     // Surface particles read only bulk ones, whose pressures are final: one pass, in any order.
@@ -572,6 +570,9 @@ double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
 template <int D>
 void Simulation<D>::save_state(StateWriter& out) const {
   const_cast<Particles<D>&>(particles).for_each_array([&](auto& v) { out.put(v); });
+  out.put(particles.body_frames.body);
+  out.put(particles.body_frames.offset);
+  out.put(particles.body_frames.normal);
   out.put(particles.ghost_source);
   out.put(particles.ghost_shift);
   out.put<std::uint64_t>(particles.removed_count);
@@ -602,6 +603,9 @@ template <int D>
 void Simulation<D>::restore_state(StateReader& in) {
   const std::size_t made = particles.real_count() + particles.removed_count;
   particles.for_each_array([&](auto& v) { in.get(v); });
+  in.get(particles.body_frames.body);
+  in.get(particles.body_frames.offset);
+  in.get(particles.body_frames.normal);
   in.get(particles.ghost_source);
   in.get(particles.ghost_shift);
   particles.removed_count = in.get<std::uint64_t>();

@@ -105,12 +105,12 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
         const Vec<D>& top = P.position[members[end - 1]];
         bool capped = false;
         for (std::size_t i = 0; i < P.size() && !capped; ++i) {
-          if (P.body[i] < 0) continue;
+          if (P.body_frame[i] < 0) continue;
           double h2 = 0.0;
           for (int k = 0; k < up; ++k) h2 += (P.position[i][k] - top[k]) * (P.position[i][k] - top[k]);
           const double above = P.position[i][up] - top[up];
           capped = h2 < 0.25 * dp * dp && above > 0.0 && above < 1.5 * dp;
-          if (capped) cap_body = P.body[i];
+          if (capped) cap_body = P.body_of(i);
         }
         if (capped) {
           top_offset = static_cast<std::size_t>(std::lround((capped_surface - surface) / dp));
@@ -179,7 +179,7 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
   //    hydrostatic pressure (2456 Pa against 2947 Pa one column further out); the corner collapsed at 0.39 s, the rest
   //    being the symmetric gradient's (fluid/gradient.hpp).
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.kind[i] == Kind::fluid || P.body[i] >= 0) continue;
+    if (P.kind[i] == Kind::fluid || P.body_frame[i] >= 0) continue;
     const Vec<D>& x = P.position[i];
     double best_h2 = re * re, shift = 0.0;
     for (const Run& run : runs) {

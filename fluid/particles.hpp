@@ -45,12 +45,24 @@ struct Particles {
   // Boundary particles: the weight with which they count in their neighbours' number density (1 unless the wall
   // model mirrors the fluid, fluid/wall_pressure.hpp). Fluid particles hold 1.
   std::vector<double> wall_fill;
-  // Boundary particles of a rigid body: the body's index (-1 for fixed walls and fluid), and the particle's offset
-  // from the body's centre of mass and its normal, both in the body's frame (angle 0). Their world position,
-  // velocity and normal are set from the body's pose every step, never integrated.
-  std::vector<std::int32_t> body;
-  std::vector<Vec<D>> body_offset;
-  std::vector<Vec<D>> body_normal;
+  // Boundary particles of a rigid body: their entry in body_frames (-1 for fixed walls and fluid). Their world
+  // position, velocity and normal are set from the body's pose every step, never integrated.
+  std::vector<std::int32_t> body_frame;
+  // One entry per body particle, not per particle (32 bytes a particle that only body particles used): the body's
+  // index, and the particle's offset from the body's centre of mass and its normal, both in the body's frame (angle 0).
+  struct BodyFrames {
+    std::vector<std::int32_t> body;
+    std::vector<Vec<D>> offset, normal;
+  } body_frames;
+
+  // The body particle i belongs to, or -1.
+  int body_of(std::size_t i) const { return body_frame[i] < 0 ? -1 : body_frames.body[body_frame[i]]; }
+  void attach_to_body(std::size_t i, int b, const Vec<D>& offset, const Vec<D>& normal) {
+    body_frame[i] = static_cast<std::int32_t>(body_frames.body.size());
+    body_frames.body.push_back(b);
+    body_frames.offset.push_back(offset);
+    body_frames.normal.push_back(normal);
+  }
 
   // Periodic ghosts (fluid/periodic.hpp). The arrays above hold the real particles first, then ghost_source.size()
   // ghosts: ghost g, at index real_count() + g, is an image of real particle ghost_source[g], equal to it in every
@@ -91,9 +103,7 @@ struct Particles {
     f(wall_normal);
     f(wall_depth);
     f(wall_fill);
-    f(body);
-    f(body_offset);
-    f(body_normal);
+    f(body_frame);
   }
 
   std::size_t add(const Vec<D>& x, Kind k, std::uint8_t phase_index, double rho, double mu) {
@@ -113,9 +123,7 @@ struct Particles {
     wall_normal.push_back(Vec<D>::Zero());
     wall_depth.push_back(0.0);
     wall_fill.push_back(1.0);
-    body.push_back(-1);
-    body_offset.push_back(Vec<D>::Zero());
-    body_normal.push_back(Vec<D>::Zero());
+    body_frame.push_back(-1);
     return i;
   }
 

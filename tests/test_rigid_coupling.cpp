@@ -24,9 +24,7 @@ TEST(RigidCoupling, BodyParticlesFollowThePoseAfterManySteps) {
   for (int k = 0; k < 50; ++k) {
     const Vec<2> x = centre + Vec<2>(0.01 * std::cos(0.7 * k) * (1 + k % 5), 0.01 * std::sin(1.3 * k) * (1 + k % 3));
     const std::size_t i = P.add(x, Kind::wall, 0, 500.0, 0.0);
-    P.body[i] = b;
-    P.body_offset[i] = x - centre;
-    P.body_normal[i] = Vec<2>(1.0, 0.0);
+    P.attach_to_body(i, b, x - centre, Vec<2>(1.0, 0.0));
     start.push_back(x);
   }
   const Vec<2> v(0.3, -0.2);
@@ -67,9 +65,7 @@ TEST(RigidCoupling, BodyParticlesCarryTheRigidAcceleration) {
   Particles<2> P;
   for (const Vec<2>& x : {Vec<2>(0.0, 0.0), Vec<2>(0.2, 0.1), Vec<2>(0.05, 0.1)}) {
     const std::size_t i = P.add(x, Kind::wall, 0, 500.0, 0.0);
-    P.body[i] = b;
-    P.body_offset[i] = x - Vec<2>(0.1, 0.05);
-    P.body_normal[i] = Vec<2>(1.0, 0.0);
+    P.attach_to_body(i, b, x - Vec<2>(0.1, 0.05), Vec<2>(1.0, 0.0));
   }
   const double omega = 2.0, dt = 1e-4;
   bodies.world.set_velocity(b, rigid::Vec2(0.0, 0.0), omega);
