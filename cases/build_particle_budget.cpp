@@ -80,8 +80,8 @@ void check_particle_budget(SceneBuild& b) {
   } catch (const std::invalid_argument& e) {
     throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
   }
-  // About 18 neighbours within re + skin at the defaults (pi 2.4^2 lattice points); 24 leaves room for compression.
-  const double bytes = run_memory_bytes(n, 24.0);
+  const auto& o = b.options();
+  const double bytes = run_memory_bytes(n, listed_neighbours_estimate(o.re_over_dp, o.skin_over_dp));
   if (limit && bytes > limit->bytes)
     throw SceneError("particle_spacing",
                      fmt::format("the scene would make about {:.3g} particles at dp = {} m and need about {} of "

@@ -11,13 +11,19 @@
 namespace slide::cases {
 
 double run_memory_bytes(double n, double neighbours) {
-  // fluid/particles.hpp: six vectors, seven doubles, phase and kind, id and body
-  const double state = 6 * sizeof(Vec<2>) + 7 * sizeof(double) + 2 + 2 * sizeof(std::uint32_t);
+  // fluid/particles.hpp: four vectors, seven doubles, phase and kind, id and body frame (a body's own table aside)
+  const double state = 4 * sizeof(Vec<2>) + 7 * sizeof(double) + 2 + 2 * sizeof(std::uint32_t);
   // tools/run_outputs.hpp IdOrdered: position and velocity, pressure, number density and density, phase and kind, id
   const double last_good = 2 * sizeof(Vec<2>) + 3 * sizeof(double) + 2 + sizeof(std::uint32_t);
-  const double working = 4 * sizeof(Vec<2>) + 2 * sizeof(std::uint32_t);
-  const double list = (neighbours + 2) * sizeof(std::uint32_t);  // fluid/neighbor_grid.hpp: first and count too
+  const double working = 3 * sizeof(Vec<2>) + 2 * sizeof(std::uint32_t);
+  // fluid/neighbor_grid.hpp (first and count too) and fluid/pair_weights.hpp
+  const double list = (neighbours + 2) * sizeof(std::uint32_t) + neighbours * sizeof(double);
   return n * (state + last_good + working + list);
+}
+
+double listed_neighbours_estimate(double re_over_dp, double skin_over_dp) {
+  const double radius = re_over_dp + skin_over_dp;
+  return 1.25 * M_PI * radius * radius;
 }
 
 namespace {

@@ -9,8 +9,12 @@ namespace slide::cases {
 
 // Bytes a run holds for n particles with `neighbours` listed neighbours each on average: the particles' arrays, the
 // last good state a failed run writes (what a snapshot holds), the step's working copies (positions at the list's
-// build and at the step's start, one vector scratch, the grid's two indices, a re-sort's temporary) and the list.
+// build and at the step's start, one vector scratch, the grid's two indices), the list and its pair weights.
 double run_memory_bytes(double n, double neighbours);
+
+// Listed neighbours a particle has on average, estimated before any particle is made: the 2-D lattice points within
+// the list's radius (re + skin), a quarter more for compression.
+double listed_neighbours_estimate(double re_over_dp, double skin_over_dp);
 
 struct MemoryLimit {
   double bytes = 0.0;

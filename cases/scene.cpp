@@ -29,8 +29,8 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   check_fluid_contained(b);
   // The last to name particles by their keys: the names (a string a particle, 60 bytes a particle with the heap's)
   // are freed before the simulation's own arrays grow.
-  b.fluid_owner = {};
-  b.boundary_owner = {};
+  std::vector<std::string>().swap(b.fluid_owner);  // (= {} would keep the storage)
+  std::vector<std::string>().swap(b.boundary_owner);
   choose_sound_speed(b);
   start_hydrostatic(b);
   set_domain(b);

@@ -116,6 +116,7 @@ void Simulation<D>::update_neighbors(bool force) {
   }
   grid_.bin(x);
   build_neighbor_list(grid_, x, list_radius(), list_, particles.real_count());
+  pair_weights_.forget();  // of the list before
   position_at_build_ = x;
   ++rebuilds_;
 }
@@ -140,20 +141,25 @@ void Simulation<D>::compute_pressure() {
     });
     copy_to_ghosts(P, P.wall_fill);
   }
-  // The pair weights are kept for the pressure gradient at these same positions (correct_with_pressure_gradient).
-  pair_weights_.shape_like(list_);
+  // Fluid particles keep their pair weights for the pressure gradient at these same positions
+  // (correct_with_pressure_gradient), where the model reads them.
+  const bool keep_weights = reads_pair_weights(options.gradient);
+  if (keep_weights) pair_weights_.shape_like(list_);
   const std::vector<double>* fill = options.wall_pressure == WP::mirror ? &P.wall_fill : nullptr;
   const double surface_n = options.free_surface_beta * lattice.n0;
   // A fluid particle's pressure follows from its own number density (seed eq. 7): in the same pass.
   parallel_for(n, [&](std::size_t i) {
-    const double n_i = number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i));
+    const bool keep = keep_weights && P.kind[i] == Kind::fluid;
+    const double n_i = keep ? number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i))
+                       : fill ? weighted_number_density_of<D>(i, P.position, *fill, list_, r_e)
+                              : number_density_of<D>(i, P.position, list_, r_e);
     P.number_density[i] = n_i;
     if (P.kind[i] != Kind::fluid) return;
     double p = n_i < surface_n ? 0.0 : eos.pressure(n_i, P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
-  pair_weights_.mark_taken_at(step_count_);
+  if (keep_weights) pair_weights_.mark_taken_at(step_count_);
   copy_to_ghosts(P, P.number_density);
   copy_to_ghosts(P, P.pressure);
   if (options.surface_pressure == SurfacePressure::extrapolated) {
@@ -606,6 +612,7 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(particles.body_frames.body);
   in.get(particles.body_frames.offset);
   in.get(particles.body_frames.normal);
+  pair_weights_.forget();
   in.get(particles.ghost_source);
   in.get(particles.ghost_shift);
   particles.removed_count = in.get<std::uint64_t>();

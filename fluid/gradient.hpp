@@ -192,6 +192,11 @@ Vec<D> pressure_gradient_pair(GradientModel m, std::size_t i, std::uint32_t j, c
   return Vec<D>::Zero();
 }
 
+// The models that read the number density's pair weights (the W / r^2 ones).
+inline bool reads_pair_weights(GradientModel m) {
+  return m == GradientModel::standard || m == GradientModel::pmin || m == GradientModel::symmetric;
+}
+
 // pair_weights: the kernel weights of i's listed pairs at these positions (fluid/pair_weights.hpp), or nullptr; the
 // W / r^2 models read them, the derivative models take their own.
 template <int D>

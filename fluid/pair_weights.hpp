@@ -29,8 +29,9 @@ class PairWeights {
   const double* of(const NeighborList& nl, std::size_t i) const {
     return blocks_[i / NeighborList::block_size].data() + nl.first[i];
   }
-  // Which step's positions the weights are of (-1: none).
+  // Which step's positions the weights are of (-1: none); a rebuilt list or a restored state forgets them.
   void mark_taken_at(long step) { taken_at_step_ = step; }
+  void forget() { taken_at_step_ = -1; }
   bool taken_at(long step) const { return taken_at_step_ == step; }
 
  private:
