@@ -111,9 +111,9 @@ Vec<D> pressure_gradient_of(std::size_t i, const Particles<D>& P, const Neighbor
   return (D / n0) * g;
 }
 
-// The same from the kernel weights the number density kept at these positions (fluid/pair_weights.hpp; w[k]: W of
-// the k-th listed neighbour, 0 beyond re): no square root. W / r^2 and the sum's order are those above, so the result
-// is bit-identical.
+// The same from the W / r^2 factors the number density kept at these positions (fluid/pair_weights.hpp; w[k]: that of
+// the k-th listed neighbour, 0 beyond re): no square root and no division. The factors and the sum's order are those
+// above, so the result is bit-identical.
 template <int D, GradientModel M>
 Vec<D> pressure_gradient_from_weights(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
                                       const double* w) {
@@ -124,8 +124,7 @@ Vec<D> pressure_gradient_from_weights(std::size_t i, const Particles<D>& P, cons
   for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q, ++w) {
     if (*w == 0.0) continue;
     const std::uint32_t j = *q;
-    const Vec<D> rij = x[j] - x[i];
-    g += pressure_pair_term_w<D, M>(i, j, rij, *w / rij.squaredNorm(), P, p_ref);
+    g += pressure_pair_term_w<D, M>(i, j, x[j] - x[i], *w, P, p_ref);
   }
   return (D / n0) * g;
 }
@@ -197,7 +196,7 @@ inline bool reads_pair_weights(GradientModel m) {
   return m == GradientModel::standard || m == GradientModel::pmin || m == GradientModel::symmetric;
 }
 
-// pair_weights: the kernel weights of i's listed pairs at these positions (fluid/pair_weights.hpp), or nullptr; the
+// pair_weights: the W / r^2 factors of i's listed pairs at these positions (fluid/pair_weights.hpp), or nullptr; the
 // W / r^2 models read them, the derivative models take their own.
 template <int D>
 Vec<D> pressure_gradient(GradientModel m, std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "fluid/kernel.hpp"
+#include "fluid/listed_pairs.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/parallel.hpp"
 
@@ -33,21 +34,22 @@ double weighted_number_density_of(std::size_t i, const std::vector<Vec<D>>& x, c
   return n;
 }
 
-// Either sum, keeping each listed neighbour's kernel weight W(|r_ij|) (0 beyond re) in w[0 .. count) for the pressure
-// gradient at the same positions (fluid/pair_weights.hpp). fill: the neighbours' weights, or nullptr for 1 each.
-// The terms and their order are those above, so the sums are bit-identical to them.
+// Either sum, keeping each listed neighbour's W(|r_ij|) / |r_ij|^2 (0 beyond re) in w_over_r2[0 .. count) for the W / r^2
+// pressure gradient at the same positions (fluid/pair_weights.hpp). fill: the neighbours' weights, or nullptr for 1
+// each. The terms and their order are those above (a zero weight beyond re adds nothing to a sum that starts at +0
+// and has no negative term), so the sums are bit-identical to them.
 template <int D>
 double number_density_keeping_weights(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>* fill,
-                                      const NeighborList& nl, double re, double* w) {
+                                      const NeighborList& nl, double re, double* w_over_r2) {
+  const std::size_t count = nl.count[i];
+  double* w = listed_weights_room(count);
+  listed_kernel_weights<D>(x[i], x, nl.begin(i), count, re, w, w_over_r2);
   double n = 0.0;
-  const double re2 = re * re;
-  for (const std::uint32_t* p = nl.begin(i); p != nl.end(i); ++p, ++w) {
-    const double r2 = distance_squared<D>(x[*p], x[i]);
-    *w = 0.0;
-    if (r2 >= re2) continue;
-    *w = kernel_weight(std::sqrt(r2), re);
-    n += fill ? (*fill)[*p] * *w : *w;
-  }
+  const std::uint32_t* nb = nl.begin(i);
+  if (fill)
+    for (std::size_t k = 0; k < count; ++k) n += (*fill)[nb[k]] * w[k];
+  else
+    for (std::size_t k = 0; k < count; ++k) n += w[k];
   return n;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
-// The kernel weight W(|r_ij|) of every listed pair at one set of positions, laid out as the neighbour list
-// (fluid/neighbor_grid.hpp): particle i's k-th listed neighbour has its weight at of(i)[k], 0 beyond re. The number
-// density takes them at the predicted positions and the pressure gradient, at the same positions, reads them: the
-// square root, the division and the branch on the distance of each pair were half the gradient's cost (perf), and
-// the bench case's loop ran 11 % faster with them kept (tools/bench, stop 25).
+// The W / r^2 factor (W(|r_ij|) / |r_ij|^2, seed eq. 6 over the squared distance) of every listed pair at one set of
+// positions, laid out as the neighbour list (fluid/neighbor_grid.hpp): particle i's k-th listed neighbour has its
+// factor at of(i)[k], 0 beyond re. The number density takes them at the predicted positions, several pairs at a time
+// (fluid/listed_pairs.hpp), and the W / r^2 pressure gradients, at the same positions, read them: the square root,
+// the division and the branch on the distance of each pair were half the gradient's cost (perf); keeping W made the
+// bench case's loop 11 % faster (stop 25), keeping W / r^2 instead took the gradient's last division per pair
+// (stop 26, docs/profile.md).
 #include <cstddef>
 #include <vector>
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fluid/kernel.hpp"
+#include "fluid/listed_pairs.hpp"
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
@@ -48,12 +49,11 @@ inline double no_slip_mirror_factor(double d_i, double d_j, double min_distance)
 //    below 1 for a phase with a Coulomb basal friction: fluid/basal_friction.hpp).
 //  * free_slip: boundary particles exert no shear; they are left out of the sum.
 template <int D>
-inline Vec<D> viscous_pair_term(std::size_t i, std::uint32_t j, double r2, const Particles<D>& P, double re,
-                                const ViscousWall& wall) {
+inline Vec<D> viscous_pair_term_w(std::size_t i, std::uint32_t j, double w, const Particles<D>& P,
+                                  const ViscousWall& wall) {
   const auto& x = P.position;
   const auto& u = P.velocity;
   const double mu_i = P.viscosity[i];
-  const double w = kernel_weight(std::sqrt(r2), re);
   if (P.kind[j] == Kind::fluid) {
     const double mu_j = P.viscosity[j];
     const double mu_ij = mu_i == mu_j ? mu_i : 2.0 * mu_i * mu_j / (mu_i + mu_j);
@@ -67,22 +67,30 @@ inline Vec<D> viscous_pair_term(std::size_t i, std::uint32_t j, double r2, const
   return (mu_i * P.wall_fraction[i] * no_slip_mirror_factor(d_i, d_j, wall.min_distance) * w) * (u[j] - u[i]);
 }
 
+// The same for a pair at squared distance r2.
+template <int D>
+inline Vec<D> viscous_pair_term(std::size_t i, std::uint32_t j, double r2, const Particles<D>& P, double re,
+                                const ViscousWall& wall) {
+  return viscous_pair_term_w<D>(i, j, kernel_weight(std::sqrt(r2), re), P, wall);
+}
+
 template <int D>
 double viscous_scale(std::size_t i, const Particles<D>& P, double n0, double lambda) {
   return 2.0 * D / (lambda * n0 * P.density[i]);
 }
 
+// The weights are taken for the whole list first (fluid/listed_pairs.hpp); pairs beyond re (weight 0) add
+// nothing and are skipped, as before.
 template <int D>
 Vec<D> viscous_acceleration(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,
                             double lambda, const ViscousWall& wall) {
-  const double re2 = re * re;
+  const std::size_t count = nl.count[i];
+  double* w = listed_weights_room(count);
+  listed_kernel_weights<D>(i, P.position, nl, re, w);
+  const std::uint32_t* nb = nl.begin(i);
   Vec<D> sum = Vec<D>::Zero();
-  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
-    const std::uint32_t j = *q;
-    const double r2 = distance_squared<D>(P.position[j], P.position[i]);
-    if (r2 >= re2) continue;
-    sum += viscous_pair_term<D>(i, j, r2, P, re, wall);
-  }
+  for (std::size_t k = 0; k < count; ++k)
+    if (w[k] != 0.0) sum += viscous_pair_term_w<D>(i, nb[k], w[k], P, wall);
   return viscous_scale<D>(i, P, n0, lambda) * sum;
 }
 

@@ -20,6 +20,7 @@
 #include "coupling/free_surface_gauge.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/surge_front.hpp"
+#include "fluid/listed_pairs.hpp"
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/checkpoint.hpp"
@@ -427,6 +428,7 @@ int run_command(const RunArguments& args) {
     j["particle_steps_per_second"] = loop_rate(wall);
     j["peak_resident_bytes"] = peak_resident_bytes();
     j["resident_bytes_at_start"] = resident_bytes_at_start;
+    j["pair_lanes"] = pair_lanes;
     j["snapshots"] = outputs.snapshot_count();
     j["left_the_domain"] = left_the_domain_json(sim);
     j["scene"] = to_json(scene->resolved);
