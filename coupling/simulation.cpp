@@ -136,8 +136,9 @@ void Simulation<D>::compute_pressure() {
   const double r_e = re();
   using WP = WallPressure;
   if (options.wall_pressure == WP::mirror) {
-    parallel_for(n, [&](std::size_t i) {
-      if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp);
+    // Each boundary particle keeps its image's fluid neighbours for its pressure below, at these same positions.
+    image_neighbours_.take(n, [&](std::size_t i, auto&& keep) {
+      if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp, keep);
     });
     copy_to_ghosts(P, P.wall_fill);
   }
@@ -182,7 +183,7 @@ void Simulation<D>::compute_pressure() {
     if (options.wall_pressure == WP::extrapolated)
       p = extrapolated_wall_pressure<D>(i, P, list_, r_e, head_acceleration);
     else
-      p = mirror_wall_pressure<D>(i, P, grid_, options.dp, head_acceleration);
+      p = mirror_wall_pressure<D>(i, P, image_neighbours_.begin(i), image_neighbours_.end(i), head_acceleration);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });

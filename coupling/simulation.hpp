@@ -18,6 +18,7 @@
 #include "fluid/equation_of_state.hpp"
 #include "fluid/fluid_options.hpp"
 #include "fluid/gradient.hpp"
+#include "fluid/image_neighbours.hpp"
 #include "fluid/implicit_viscosity.hpp"
 #include "fluid/kernel.hpp"
 #include "fluid/lattice.hpp"
@@ -165,6 +166,7 @@ class Simulation {
   bool outside_domain(std::size_t i) const;
   NeighborGrid<D> grid_;
   NeighborList list_;
+  ImageNeighbours image_neighbours_;  // of the predicted positions: the mirror fill finds them, the wall pressure reads them
   PairWeights pair_weights_;  // of the predicted positions: compute_pressure takes them, the gradient reads them
   std::vector<Vec<D>> position_at_build_;
   std::vector<Vec<D>> position_at_step_start_;  // for face_crossed; filled only when there are wall faces
