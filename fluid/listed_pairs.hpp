@@ -11,33 +11,24 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <experimental/simd>
 #include <vector>
 
+#include "fluid/lanes.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/vec.hpp"
 
 namespace slide {
 
-namespace stdx = std::experimental;
-
-// Pairs taken at once: 2 in a baseline x86-64 build, 4 with AVX2 (CMakeLists.txt SLIDE_SIMD). run.json reports it.
-inline constexpr std::size_t pair_lanes = stdx::native_simd<double>::size();
 
 // W into w[0 .. count) for the neighbours nb[0 .. count) of a particle at xi, and W / r^2 into w_over_r2 unless it is
 // nullptr (the W / r^2 gradient models' factor, fluid/gradient.hpp; W / 0 for a neighbour on top of xi).
 template <int D>
 void listed_kernel_weights(const Vec<D>& xi, const std::vector<Vec<D>>& x, const std::uint32_t* nb, std::size_t count,
                            double re, double* w, double* w_over_r2 = nullptr) {
-  using Lanes = stdx::native_simd<double>;
-  constexpr std::size_t L = Lanes::size();
+  constexpr std::size_t L = pair_lanes;
   std::size_t k = 0;
   for (; k + L <= count; k += L) {
-    Lanes r2(0.0);  // summed in distance_squared's order: 0 + d0^2 + d1^2 (+ d2^2)
-    for (int c = 0; c < D; ++c) {
-      const Lanes d([&](auto l) { return x[nb[k + l]][c] - xi[c]; });
-      r2 += d * d;
-    }
+    const Lanes r2 = lane_distances_squared<D>(xi, x, [&](std::size_t l) { return nb[k + l]; });
     Lanes s = Lanes(1.0) - stdx::sqrt(r2) / Lanes(re);
     stdx::where(s < Lanes(0.0), s) = 0.0;
     const Lanes weight = s * s * s;
@@ -69,15 +60,10 @@ void listed_kernel_weights(std::size_t i, const std::vector<Vec<D>>& x, const Ne
 template <int D>
 bool any_listed_closer(const Vec<D>& xi, const std::vector<Vec<D>>& x, const std::uint32_t* nb, std::size_t count,
                        double distance2) {
-  using Lanes = stdx::native_simd<double>;
-  constexpr std::size_t L = Lanes::size();
+  constexpr std::size_t L = pair_lanes;
   std::size_t k = 0;
   for (; k + L <= count; k += L) {
-    Lanes r2(0.0);
-    for (int c = 0; c < D; ++c) {
-      const Lanes d([&](auto l) { return x[nb[k + l]][c] - xi[c]; });
-      r2 += d * d;
-    }
+    const Lanes r2 = lane_distances_squared<D>(xi, x, [&](std::size_t l) { return nb[k + l]; });
     if (stdx::any_of(r2 < Lanes(distance2))) return true;
   }
   for (; k < count; ++k)

@@ -60,6 +60,10 @@ class NeighborGrid {
 
   // Calls f(j, r2) for every binned point j with |x_j - q|^2 < radius^2, in a fixed order (cells in lexicographic
   // order, points within a cell in index order). radius must not exceed the cell size.
+  // Cells are numbered along x first and points are sorted by cell, so the cells of a row (fixed y, and z) that the
+  // search visits hold one contiguous run of sorted points: each row is walked as one run, in the same order as cell
+  // by cell (1 % faster on the bench case, stop 26; taking the run's points several at a time in SIMD lanes was not
+  // faster still).
   template <class F>
   void for_each_near(const Vec<D>& q, double radius, const std::vector<Vec<D>>& x, F&& f) const {
     const double r2max = radius * radius;
@@ -69,21 +73,31 @@ class NeighborGrid {
       lo[k] = std::max(c[k] - 1, 0);
       hi[k] = std::min(c[k] + 1, cells_[k] - 1);
     }
-    std::array<int, D> cc;
+    std::array<int, D> row_lo = lo, row_hi = hi;
+    auto walk_row = [&] {
+      visit_run(cell_start_[linear(row_lo)], cell_start_[linear(row_hi) + 1], q, r2max, x, f);
+    };
     if constexpr (D == 2) {
-      for (cc[1] = lo[1]; cc[1] <= hi[1]; ++cc[1])
-        for (cc[0] = lo[0]; cc[0] <= hi[0]; ++cc[0]) visit_cell(linear(cc), q, r2max, x, f);
+      for (int y = lo[1]; y <= hi[1]; ++y) {
+        row_lo[1] = row_hi[1] = y;
+        walk_row();
+      }
     } else {
-      for (cc[2] = lo[2]; cc[2] <= hi[2]; ++cc[2])
-        for (cc[1] = lo[1]; cc[1] <= hi[1]; ++cc[1])
-          for (cc[0] = lo[0]; cc[0] <= hi[0]; ++cc[0]) visit_cell(linear(cc), q, r2max, x, f);
+      for (int z = lo[2]; z <= hi[2]; ++z)
+        for (int y = lo[1]; y <= hi[1]; ++y) {
+          row_lo[1] = row_hi[1] = y;
+          row_lo[2] = row_hi[2] = z;
+          walk_row();
+        }
     }
   }
 
  private:
   template <class F>
-  void visit_cell(std::size_t cell, const Vec<D>& q, double r2max, const std::vector<Vec<D>>& x, F& f) const {
-    for (std::uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+  void visit_run(std::uint32_t from, std::uint32_t to, const Vec<D>& q, double r2max, const std::vector<Vec<D>>& x,
+                 F& f) const {
+    std::uint32_t s = from;
+    for (; s < to; ++s) {
       const std::uint32_t j = sorted_[s];
       const double r2 = distance_squared<D>(x[j], q);
       if (r2 < r2max) f(j, r2);
