@@ -113,7 +113,8 @@ Vec<D> pressure_gradient_of(std::size_t i, const Particles<D>& P, const Neighbor
 
 // The same from the W / r^2 factors the number density kept at these positions (fluid/pair_weights.hpp; w[k]: that of
 // the k-th listed neighbour, 0 beyond re): no square root and no division. The factors and the sum's order are those
-// above, so the result is bit-identical. A fluid neighbour beyond re adds a zero term rather than being skipped on a
+// above, so the result is bit-identical (for finite pressures). A fluid neighbour beyond re adds a zero term rather
+// than being skipped on a
 // branch the predictor cannot follow (as in fluid/viscosity.hpp; 2 % of the bench case's first 0.05 s, stop 26).
 template <int D, GradientModel M>
 Vec<D> pressure_gradient_from_weights(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double n0,

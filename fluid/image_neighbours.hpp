@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fluid/neighbor_grid.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/wall_pressure.hpp"
 
@@ -23,13 +24,19 @@ class ImageNeighbours {
     count_.resize(n);
     blocks_.resize((n + block_size - 1) / block_size);  // a block's storage is kept from step to step
     parallel_for_blocks(blocks_.size(), n, [&](std::size_t b) {
-      std::vector<ImageNeighbour>& block = blocks_[b];
-      block.clear();
+      // Found into the thread's own scratch, then copied, as the neighbour list is (fluid/neighbor_grid.hpp): a
+      // block's storage is then its size and a margin, not the up to twice that a growing vector holds.
+      thread_local std::vector<ImageNeighbour> found;
+      found.clear();
       for (std::size_t i = b * block_size; i < std::min(n, (b + 1) * block_size); ++i) {
-        first_[i] = static_cast<std::uint32_t>(block.size());
-        find(i, [&](std::uint32_t f, double w) { block.push_back({f, w}); });
-        count_[i] = static_cast<std::uint32_t>(block.size()) - first_[i];
+        first_[i] = static_cast<std::uint32_t>(found.size());
+        find(i, [&](std::uint32_t f, double w) { found.push_back({f, w}); });
+        count_[i] = static_cast<std::uint32_t>(found.size()) - first_[i];
       }
+      std::vector<ImageNeighbour>& block = blocks_[b];
+      if (block.capacity() < found.size()) block = std::vector<ImageNeighbour>();  // no copy of the old contents
+      reserve_with_margin(block, found.size());
+      block.assign(found.begin(), found.end());
     });
   }
   const ImageNeighbour* begin(std::size_t i) const { return blocks_[i / block_size].data() + first_[i]; }

@@ -85,7 +85,8 @@ inline void for_each_viscous_coupling(std::size_t i, const Particles<D>& P, cons
 
 // One walk over fluid particle i's neighbours: its viscous row number s_i (header), dt c (sum_fluid mu_ij W_ij +
 // sum_wall mu_i f_ij W_ij) / rho_i, c = 2d / (lambda n0), and its explicit viscous acceleration at the present
-// velocities, the same sum as viscous_acceleration (fluid/viscosity.hpp) in the same order, hence the same value.
+// velocities, the same sum as viscous_acceleration (fluid/viscosity.hpp) in the same order, hence the same value
+// (for finite velocities: viscous_acceleration adds the zero terms of fluid neighbours beyond re, this skips them).
 template <int D>
 struct ViscousRow {
   double number = 0.0;

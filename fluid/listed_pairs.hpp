@@ -44,6 +44,7 @@ void listed_kernel_weights(const Vec<D>& xi, const std::vector<Vec<D>>& x, const
 
 // Room for a particle's weights in the calling thread's own buffer (kept from call to call, grown when a list is
 // longer than any before on that thread).
+// A stage holds the pointer only while it sums one particle's pairs, and calls no other stage that uses the room.
 inline double* listed_weights_room(std::size_t count) {
   thread_local std::vector<double> room;
   if (room.size() < count) room.resize(count + count / 4);

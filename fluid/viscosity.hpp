@@ -80,7 +80,9 @@ double viscous_scale(std::size_t i, const Particles<D>& P, double n0, double lam
 }
 
 // The weights are taken for the whole list first (fluid/listed_pairs.hpp). A fluid neighbour beyond re (weight 0)
-// adds a zero term instead of being skipped: the sum is unchanged to the bit (it starts at +0, and x + 0 = x), and a
+// adds a zero term instead of being skipped: the sum is unchanged to the bit for finite velocities and viscosities (it
+// starts at +0, and x + 0 = x; a non-finite neighbour beyond re now spreads to i a stage sooner, in a run the step's
+// checks then stop anyway), and a
 // branch on each pair's weight, which the predictor cannot follow, is gone (4 % of the bench case's first 0.05 s,
 // stop 26). Boundary neighbours beyond re are still skipped: their mirror factor divides by a distance.
 template <int D>

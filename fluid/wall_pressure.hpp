@@ -35,6 +35,18 @@ double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const Ne
   return p;
 }
 
+// The mirror image of boundary particle w: x_m = x_w + 2 d_w n_w, as far in front of its face as w lies behind it.
+template <int D>
+Vec<D> mirror_image(std::size_t w, const Particles<D>& P) {
+  return P.position[w] + (2.0 * P.wall_depth[w]) * P.wall_normal[w];
+}
+
+// The weight of a fluid particle at distance r from a mirror image in the image's pressure (mirror_wall_pressure):
+//   w_f = W(r; dp) + 0.05 W(r; 1.5 dp).
+inline double mirror_pressure_weight(double r, double dp) {
+  return kernel_weight(r, dp) + 0.05 * kernel_weight(r, 1.5 * dp);
+}
+
 // How much fluid surrounds a boundary particle's mirror image, relative to a full lattice neighbourhood (capped at 1):
 //   fill_w = min(1, sum_f W(|x_f - x_m|; 1.5 dp) / (sum_lattice W(; 1.5 dp) / 2)).
 // The half makes any image inside the water count fully, even one beside the wall, whose lattice neighbourhood
@@ -48,17 +60,6 @@ double extrapolated_wall_pressure(std::size_t w, const Particles<D>& P, const Ne
 // The image is a point, found through the grid; the particle's own neighbours within dp are in its list (its radius,
 // re + skin, is larger), walked in the grid's order, so the sum is the grid search's to the bit, for a third of its
 // candidates (the grid search was 6 % of the bench case, perf).
-template <int D>
-Vec<D> mirror_image(std::size_t w, const Particles<D>& P) {
-  return P.position[w] + (2.0 * P.wall_depth[w]) * P.wall_normal[w];
-}
-
-// The weight of a fluid particle at distance r from a mirror image in the image's pressure (mirror_wall_pressure):
-//   w_f = W(r; dp) + 0.05 W(r; 1.5 dp).
-inline double mirror_pressure_weight(double r, double dp) {
-  return kernel_weight(r, dp) + 0.05 * kernel_weight(r, 1.5 * dp);
-}
-
 // keep(f, w_f) is called for each fluid particle f within 1.5 dp of the image, in the grid's order, with its
 // pressure weight: mirror_wall_pressure at the same positions needs exactly these, and finding them through the grid
 // again was 5 % of the bench case (perf, stop 26).
@@ -89,6 +90,12 @@ double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& 
   return mirror_fill<D>(w, P, grid, nl, dp, [](std::uint32_t, double) {});
 }
 
+// One fluid particle around a mirror image, with its pressure weight w_f (mirror_pressure_weight).
+struct ImageNeighbour {
+  std::uint32_t fluid;
+  double weight;
+};
+
 // Pressure of a boundary particle from its mirror image in the fluid (fixed ghost particles: Takeda, Miyama & Sekiya
 // 1994; Marrone et al. 2011): the image point x_m = x_w + 2 d_w n_w lies as far in front of the face as the particle
 // lies behind it; its pressure is a Shepard interpolation of the fluid's pressure around x_m, and the hydrostatic
@@ -100,12 +107,6 @@ double mirror_fill(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& 
 // linear; the wide kernel's small share takes over smoothly when no particle is near the image. Why not the plain
 // weighted mean around the wall particle: near a free surface it smears the surface's zero pressure into the rows
 // below, and the wall pushes the surface particles off it. No fluid near the image (a wall above the water): p = 0.
-// One fluid particle around a mirror image, with its pressure weight w_f (mirror_pressure_weight).
-struct ImageNeighbour {
-  std::uint32_t fluid;
-  double weight;
-};
-
 // The formula above from the image's fluid neighbours (kept by mirror_fill at the same positions).
 template <int D>
 double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const ImageNeighbour* begin, const ImageNeighbour* end,

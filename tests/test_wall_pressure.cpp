@@ -2,8 +2,12 @@
 // along g - a_w when the wall accelerates.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <random>
 
+#include "fluid/image_neighbours.hpp"
 #include "fluid/wall_pressure.hpp"
 
 namespace slide {
@@ -65,6 +69,45 @@ TEST(WallPressure, ExtrapolatedContinuesTheHydrostaticFieldOfTheWallsFrame) {
     const double exact = s.exact(s.first_layer, g + a);
     EXPECT_NEAR(extrapolated_wall_pressure<2>(s.first_layer, s.P, s.list, s.re, head_acceleration), exact, 1e-9 * exact) << a;
   }
+}
+
+// The wall pressure from the image's fluid neighbours that the mirror fill kept (fluid/image_neighbours.hpp, as the
+// step uses it) is the grid search's to the bit, and the fill is the plain mirror_fill's: every boundary particle of
+// a disordered floor with water above, some images among the water and some beside it.
+TEST(WallPressure, KeptImageNeighboursGiveTheGridSearchsPressureAndFill) {
+  FloorWithWater s(g);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.2 * s.dp, 0.2 * s.dp);
+  for (int i = 0; i < 20; ++i)
+    for (const int layer : {0, 1, 2}) {
+      const std::size_t w = s.P.add(Vec<2>((i + 0.5) * s.dp + jitter(rng), -(layer + 0.5) * s.dp), Kind::wall, 0,
+                                    s.rho, 1e-3);
+      s.P.wall_normal[w] = Vec<2>(0.0, 1.0);
+      s.P.wall_depth[w] = (layer + 0.5) * s.dp;
+    }
+  for (std::size_t f = 0; f < s.P.size(); ++f)
+    if (s.P.kind[f] == Kind::fluid) s.P.position[f] += Vec<2>(jitter(rng), jitter(rng));
+  s.grid.bin(s.P.position);
+  build_neighbor_list(s.grid, s.P.position, s.re, s.list);
+  ImageNeighbours images;
+  std::vector<double> fill(s.P.size(), -1.0);
+  images.take(s.P.size(), [&](std::size_t i, auto&& keep) {
+    if (s.P.kind[i] != Kind::fluid) fill[i] = mirror_fill<2>(i, s.P, s.grid, s.list, s.dp, keep);
+  });
+  const Vec<2> head_acceleration(0.0, -g);
+  std::size_t walls = 0, kept = 0;
+  for (std::size_t w = 0; w < s.P.size(); ++w) {
+    if (s.P.kind[w] == Kind::fluid) continue;
+    ++walls;
+    kept += images.end(w) - images.begin(w);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(fill[w]), std::bit_cast<std::uint64_t>(mirror_fill<2>(w, s.P, s.grid, s.list, s.dp)));
+    const double read = mirror_wall_pressure<2>(w, s.P, images.begin(w), images.end(w), head_acceleration);
+    const double searched = mirror_wall_pressure<2>(w, s.P, s.grid, s.dp, head_acceleration);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(read), std::bit_cast<std::uint64_t>(searched)) << w;
+    EXPECT_GT(read, 0.0) << w;
+  }
+  EXPECT_EQ(walls, 62u);
+  EXPECT_GT(kept, 5 * walls);
 }
 
 }  // namespace
