@@ -18,10 +18,10 @@ double run_memory_bytes(double n, double neighbours) {
   const double working = 3 * sizeof(Vec<2>) + 2 * sizeof(std::uint32_t);
   // fluid/neighbor_grid.hpp (first and count too) and fluid/pair_weights.hpp
   const double list = (neighbours + 2) * sizeof(std::uint32_t) + neighbours * sizeof(double);
-  // fluid/image_neighbours.hpp: first and count of every particle, and about 9 kept fluid neighbours (16 B each) of
-  // each wetted boundary particle, which this estimate does not know the number of: in the bench case (3,018 boundary
-  // particles of 23,018) they come to about 19 B a particle, counted here for every scene
-  const double images = 2 * sizeof(std::uint32_t) + 19.0;
+  // fluid/image_neighbours.hpp: 8 B and about 9 kept fluid neighbours (16 B each) for each wetted boundary particle,
+  // which this estimate does not know the number of: in the bench case (3,018 boundary particles of 23,018) they come
+  // to about 20 B a particle, counted here for every scene
+  const double images = 20.0;
   return n * (state + last_good + working + list + images);
 }
 

@@ -138,7 +138,9 @@ void Simulation<D>::compute_pressure() {
   if (options.wall_pressure == WP::mirror) {
     // Each boundary particle keeps its image's fluid neighbours for its pressure below, at these same positions.
     image_neighbours_.take(n, [&](std::size_t i, auto&& keep) {
-      if (P.kind[i] != Kind::fluid) P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp, keep);
+      if (P.kind[i] == Kind::fluid) return false;
+      P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp, keep);
+      return true;
     });
     copy_to_ghosts(P, P.wall_fill);
   }
@@ -173,20 +175,24 @@ void Simulation<D>::compute_pressure() {
     copy_to_ghosts(P, P.pressure);
   }
   // boundary pressure below reads the fluid's, ghosts' included
-  parallel_for(n, [&](std::size_t i) {
-    if (P.kind[i] == Kind::fluid) return;
-    // The head between a boundary particle and the fluid follows g - a_w: a wall that accelerates into the water
-    // pushes harder (Adami, Hu & Adams 2012, eq. 27). Fixed walls have a_w = 0; body particles carry their body's
-    // rigid acceleration (coupling/rigid_bodies.hpp).
-    const Vec<D> head_acceleration = options.gravity - P.acceleration[i];
-    double p = 0.0;
-    if (options.wall_pressure == WP::extrapolated)
-      p = extrapolated_wall_pressure<D>(i, P, list_, r_e, head_acceleration);
-    else
-      p = mirror_wall_pressure<D>(i, P, image_neighbours_.begin(i), image_neighbours_.end(i), head_acceleration);
+  // The head between a boundary particle and the fluid follows g - a_w: a wall that accelerates into the water
+  // pushes harder (Adami, Hu & Adams 2012, eq. 27). Fixed walls have a_w = 0; body particles carry their body's
+  // rigid acceleration (coupling/rigid_bodies.hpp).
+  const auto head_acceleration = [&](std::size_t i) -> Vec<D> { return options.gravity - P.acceleration[i]; };
+  const auto set_boundary_pressure = [&](std::size_t i, double p) {
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
-  });
+  };
+  if (options.wall_pressure == WP::extrapolated) {
+    parallel_for(n, [&](std::size_t i) {
+      if (P.kind[i] == Kind::fluid) return;
+      set_boundary_pressure(i, extrapolated_wall_pressure<D>(i, P, list_, r_e, head_acceleration(i)));
+    });
+  } else {
+    image_neighbours_.for_each([&](std::size_t i, const ImageNeighbour* begin, const ImageNeighbour* end) {
+      set_boundary_pressure(i, mirror_wall_pressure<D>(i, P, begin, end, head_acceleration(i)));
+    });
+  }
   copy_to_ghosts(P, P.pressure);
 }
 
