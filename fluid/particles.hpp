@@ -179,7 +179,10 @@ struct Particles {
     static_assert((std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec<D>>) && sizeof(T) <= sizeof(Vec<D>));
     unsigned char* old = reinterpret_cast<unsigned char*>(buffer.data());
     std::memcpy(old, v.data(), v.size() * sizeof(T));
-    for (std::size_t i = 0; i < order.size(); ++i) std::memcpy(&v[i], old + std::size_t(order[i]) * sizeof(T), sizeof(T));
+    // Through void*: the element may be an Eigen vector, which GCC's -Wclass-memaccess flags though it holds just
+    // its coefficients (static_assert above).
+    for (std::size_t i = 0; i < order.size(); ++i)
+      std::memcpy(static_cast<void*>(&v[i]), old + std::size_t(order[i]) * sizeof(T), sizeof(T));
   }
 
   template <class T>
