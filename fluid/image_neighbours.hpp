@@ -28,8 +28,7 @@ class ImageNeighbours {
     n_ = n;
     blocks_.resize((n + block_size - 1) / block_size);  // a block's storage is kept from step to step
     parallel_for_blocks(blocks_.size(), n, [&](std::size_t b) {
-      // Found into the thread's own scratch, then copied, as the neighbour list is (fluid/neighbor_grid.hpp): a
-      // block's storage is then its size and a margin, not the up to twice that a growing vector holds.
+      // Found into the thread's own scratch, then copied, as the neighbour list is (assign_with_margin).
       thread_local std::vector<ImageNeighbour> found;
       thread_local std::vector<Owner> owners;
       found.clear();
@@ -39,8 +38,8 @@ class ImageNeighbours {
         if (find(i, [&](std::uint32_t f, double w) { found.push_back({f, w}); }))
           owners.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(found.size()) - before});
       }
-      copy_with_margin(found, blocks_[b].neighbours);
-      copy_with_margin(owners, blocks_[b].owners);
+      assign_with_margin(found, blocks_[b].neighbours);
+      assign_with_margin(owners, blocks_[b].owners);
     });
   }
 
@@ -64,13 +63,6 @@ class ImageNeighbours {
     std::vector<ImageNeighbour> neighbours;
     std::vector<Owner> owners;
   };
-  template <class T>
-  static void copy_with_margin(const std::vector<T>& from, std::vector<T>& to) {
-    if (to.capacity() < from.size()) to = std::vector<T>();  // no copy of the old contents
-    reserve_with_margin(to, from.size());
-    to.assign(from.begin(), from.end());
-  }
-
   std::size_t n_ = 0;
   std::vector<Block> blocks_;
 };

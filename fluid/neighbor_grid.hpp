@@ -138,6 +138,15 @@ void reserve_with_margin(std::vector<T>& v, std::size_t n) {
   if (v.capacity() < n) v.reserve(n + n / 16);
 }
 
+// `to` becomes a copy of `from` in storage of its size and a margin (reserve_with_margin): what a block found into a
+// thread's growing scratch is kept at about its size, not the up to twice that a growing vector holds.
+template <class T>
+void assign_with_margin(const std::vector<T>& from, std::vector<T>& to) {
+  if (to.capacity() < from.size()) to = std::vector<T>();  // no copy of the old contents
+  reserve_with_margin(to, from.size());
+  to.assign(from.begin(), from.end());
+}
+
 // Builds the list of all j != i with |x_j - x_i| < radius from a grid already binned on x, in the grid's visiting
 // order (fixed, so every sum over a list is too). Only the first `listed` points get a list (the others, periodic
 // ghosts, are found as neighbours but have an empty list of their own); all of them by default.
@@ -151,8 +160,7 @@ void build_neighbor_list(const NeighborGrid<D>& grid, const std::vector<Vec<D>>&
   list.count.assign(n, 0);
   list.blocks.resize(std::max<std::size_t>(1, (n + bs - 1) / bs));  // a block's storage is kept from build to build
   parallel_for_blocks(list.blocks.size(), m, [&](std::size_t b) {
-    // Found into the thread's own scratch, then copied: a block's storage is then its size (and a margin for later
-    // builds), not the up to twice that a growing vector holds.
+    // Found into the thread's own scratch, then copied (assign_with_margin).
     thread_local std::vector<std::uint32_t> found;
     found.clear();
     for (std::size_t i = b * bs; i < std::min(m, (b + 1) * bs); ++i) {
@@ -162,10 +170,7 @@ void build_neighbor_list(const NeighborGrid<D>& grid, const std::vector<Vec<D>>&
       });
       list.count[i] = static_cast<std::uint32_t>(found.size()) - list.first[i];
     }
-    std::vector<std::uint32_t>& block = list.blocks[b];
-    if (block.capacity() < found.size()) block = std::vector<std::uint32_t>();  // no copy of the old contents
-    reserve_with_margin(block, found.size());
-    block.assign(found.begin(), found.end());
+    assign_with_margin(found, list.blocks[b]);
   });
 }
 

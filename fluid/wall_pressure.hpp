@@ -121,11 +121,13 @@ double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const ImageNei
   return (sum_pw + sum_rho_w * head_acceleration.dot(P.position[w] - mirror_image<D>(w, P))) / sum_w;
 }
 
-// The same, finding the image's fluid neighbours through the grid.
+// The same, finding the image's fluid neighbours through the grid (the step uses the kept ones; this is for a
+// boundary particle alone, and the tests). The scratch is the thread's own, so a call allocates nothing once grown.
 template <int D>
 double mirror_wall_pressure(std::size_t w, const Particles<D>& P, const NeighborGrid<D>& grid, double dp,
                             const Vec<D>& head_acceleration) {
-  std::vector<ImageNeighbour> near;
+  thread_local std::vector<ImageNeighbour> near;
+  near.clear();
   grid.for_each_near(mirror_image<D>(w, P), 1.5 * dp, P.position, [&](std::uint32_t f, double r2) {
     if (P.kind[f] == Kind::fluid) near.push_back({f, mirror_pressure_weight(std::sqrt(r2), dp)});
   });
