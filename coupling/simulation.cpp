@@ -113,8 +113,10 @@ void Simulation<D>::update_neighbors(bool force) {
   if (options.periodic_x) {
     add_ghosts(particles, *options.periodic_x, list_radius());
     scratch_.resize(particles.size(), Vec<D>::Zero());
+    grid_.bin(x);
+  } else {
+    grid_.follow_reorder();  // the binning of the sorted particles, known without binning them again
   }
-  grid_.bin(x);
   build_neighbor_list(grid_, x, list_radius(), list_, particles.real_count());
   pair_weights_.forget();  // of the list before
   position_at_build_ = x;
@@ -211,13 +213,14 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
   const double dp = options.dp;
   // Moving boundaries count in the CFL limit: a slide faster than the water around it must not cross more than a
   // fraction of a spacing per step either (fixed walls have zero velocity).
-  const double u_max = std::sqrt(parallel_max(n, 0.0, [&](std::size_t i) { return P.velocity[i].squaredNorm(); }));
   // So do they in the force limit: body particles carry their body's rigid acceleration (a slide hitting the slope
-  // or the water decelerates hard), fixed walls zero.
-  const double a_max = std::sqrt(parallel_max(n, 0.0, [&](std::size_t i) { return P.acceleration[i].squaredNorm(); }));
-  const double nu_max = parallel_max(n, 0.0, [&](std::size_t i) {
-    return P.kind[i] == Kind::fluid ? P.viscosity[i] / P.density[i] : 0.0;
-  });
+  // or the water decelerates hard), fixed walls zero. The three largest in one pass.
+  const auto [u2_max, a2_max, nu_max] =
+      parallel_max_each<3>(n, {0.0, 0.0, 0.0}, [&](std::size_t i) -> std::array<double, 3> {
+        return {P.velocity[i].squaredNorm(), P.acceleration[i].squaredNorm(),
+                P.kind[i] == Kind::fluid ? P.viscosity[i] / P.density[i] : 0.0};
+      });
+  const double u_max = std::sqrt(u2_max), a_max = std::sqrt(a2_max);
   std::pair<double, TimeStepLimit> best{options.dt_max, TimeStepLimit::dt_max};
   auto consider = [&](double dt, TimeStepLimit l) {
     if (dt < best.first) best = {dt, l};
@@ -232,8 +235,10 @@ template <int D>
 std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   update_neighbors(false);
   const bool walls_checked = D == 2 && !wall_crossing.empty();
-  if (walls_checked) position_at_step_start_.assign(particles.position.begin(),
-                                                    particles.position.begin() + particles.real_count());
+  if (walls_checked) {
+    position_at_step_start_.resize(particles.real_count());
+    parallel_for(particles.real_count(), [&](std::size_t i) { position_at_step_start_[i] = particles.position[i]; });
+  }
   update_viscosity();
   predict_with_viscosity_and_gravity(dt);
   compute_pressure();  // at the predicted positions

@@ -58,6 +58,13 @@ class NeighborGrid {
   // Point indices ordered by cell: the permutation that re-sorts particles for locality.
   const std::vector<std::uint32_t>& sorted_indices() const { return sorted_; }
 
+  // After the points were reordered by sorted_indices() (new point i is old point sorted_[i], positions unchanged):
+  // the binning bin() would now give, without computing it again. Every cell starts where it did, and the sorted
+  // order is the identity: bin is stable, and the reordered points come cell by cell in index order.
+  void follow_reorder() {
+    for (std::size_t s = 0; s < sorted_.size(); ++s) sorted_[s] = static_cast<std::uint32_t>(s);
+  }
+
   // Calls f(j, r2) for every binned point j with |x_j - q|^2 < radius^2, in a fixed order (cells in lexicographic
   // order, points within a cell in index order). radius must not exceed the cell size.
   // Cells are numbered along x first and points are sorted by cell, so the cells of a row (fixed y, and z) that the
@@ -108,7 +115,8 @@ class NeighborGrid {
   double cell_size_ = 1.0;
   std::array<int, D> cells_{};
   std::size_t total_cells_ = 0;
-  std::vector<std::uint32_t> point_cell_, cell_start_, sorted_;
+  std::vector<std::uint32_t> point_cell_;  // bin's scratch: each point's cell (stale after follow_reorder)
+  std::vector<std::uint32_t> cell_start_, sorted_;
 };
 
 // Neighbour list in blocks of `block_size` particles: each block's lists lie back to back in a vector of their own,

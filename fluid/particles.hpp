@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fluid/name_table.hpp"
+#include "fluid/parallel.hpp"
 #include "fluid/vec.hpp"
 
 namespace slide {
@@ -181,8 +182,10 @@ struct Particles {
     std::memcpy(old, v.data(), v.size() * sizeof(T));
     // Through void*: the element may be an Eigen vector, which GCC's -Wclass-memaccess flags though it holds just
     // its coefficients (static_assert above).
-    for (std::size_t i = 0; i < order.size(); ++i)
+    // The gather in parallel: each index is written by one thread, from the copy, so the result is the serial one.
+    parallel_for(order.size(), [&](std::size_t i) {
       std::memcpy(static_cast<void*>(&v[i]), old + std::size_t(order[i]) * sizeof(T), sizeof(T));
+    });
   }
 
   template <class T>

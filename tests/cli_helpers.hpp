@@ -1,13 +1,17 @@
 #pragma once
 // Helpers for tests that run the slide program as a user would.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace slide::testing {
 
@@ -42,11 +46,34 @@ method: {initial_state: lattice}
 inline std::string slide_binary() { return SLIDE_BINARY; }
 inline std::filesystem::path source_dir() { return SLIDE_SOURCE_DIR; }
 
-// A fresh folder under the system's temporary directory.
+// The folders fresh_directory made in this process, removed when it exits (each test runs in a process of its own
+// under ctest), unless SLIDE_KEEP_TEST_DIRS is set, to look at what a failed test left: a run of the whole suite had
+// left some 2,000 of them behind.
+class TestDirectories {
+ public:
+  static TestDirectories& made() {
+    static TestDirectories d;
+    return d;
+  }
+  void add(const std::filesystem::path& p) { paths_.push_back(p); }
+  ~TestDirectories() {
+    // A forked child that exits normally must not take its parent's folders with it.
+    if (std::getenv("SLIDE_KEEP_TEST_DIRS") || ::getpid() != owner_) return;
+    std::error_code ignored;  // a folder already gone, or not removable, is no reason to fail at exit
+    for (const auto& p : paths_) std::filesystem::remove_all(p, ignored);
+  }
+
+ private:
+  std::vector<std::filesystem::path> paths_;
+  pid_t owner_ = ::getpid();
+};
+
+// A fresh folder under the system's temporary directory, removed when the process exits (TestDirectories).
 inline std::filesystem::path fresh_directory(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("slide_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  TestDirectories::made().add(dir);
   return dir;
 }
 

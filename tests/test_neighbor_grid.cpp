@@ -77,6 +77,29 @@ TEST(NeighborGrid, SortedIndicesArePermutationGroupedByCell) {
   for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], i);
 }
 
+// Points reordered by the sorted indices: follow_reorder gives exactly the binning a fresh bin of them gives (the step
+// relies on it instead of binning again), and the neighbour lists built from it are the same, in the same order.
+template <int D>
+void expect_follow_reorder_equals_fresh_bin(std::size_t n, double radius) {
+  const auto x = random_points<D>(n, 1.0, 11 + D);
+  NeighborGrid<D> followed(Vec<D>::Zero(), Vec<D>::Ones(), radius), fresh = followed;
+  followed.bin(x);
+  std::vector<Vec<D>> sorted;
+  for (const auto i : followed.sorted_indices()) sorted.push_back(x[i]);
+  followed.follow_reorder();
+  fresh.bin(sorted);
+  ASSERT_EQ(followed.sorted_indices(), fresh.sorted_indices());
+  NeighborList a, b;
+  build_neighbor_list(followed, sorted, radius, a);
+  build_neighbor_list(fresh, sorted, radius, b);
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(std::vector<std::uint32_t>(a.begin(i), a.end(i)), std::vector<std::uint32_t>(b.begin(i), b.end(i)))
+        << "particle " << i;
+}
+
+TEST(NeighborGrid, FollowingAReorderBinsAsAFreshBinDoes2D) { expect_follow_reorder_equals_fresh_bin<2>(6000, 0.03); }
+TEST(NeighborGrid, FollowingAReorderBinsAsAFreshBinDoes3D) { expect_follow_reorder_equals_fresh_bin<3>(6000, 0.1); }
+
 TEST(NeighborGrid, PointQueryMatchesBruteForce) {
   const auto x = random_points<2>(1000, 1.0, 9);
   NeighborGrid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), 0.08);
