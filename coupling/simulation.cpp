@@ -146,25 +146,26 @@ void Simulation<D>::compute_pressure() {
     });
     copy_to_ghosts(P, P.wall_fill);
   }
-  // Fluid particles keep their pair weights for the pressure gradient at these same positions
+  // Fluid particles keep their pairs' factors for the pressure gradient at these same positions
   // (correct_with_pressure_gradient), where the model reads them.
-  const bool keep_weights = reads_pair_weights(options.gradient);
-  if (keep_weights) pair_weights_.shape_like(list_);
+  const PairFactor factor = kept_pair_factor(options.gradient);
+  pair_weights_.shape_like(list_);
   const std::vector<double>* fill = options.wall_pressure == WP::mirror ? &P.wall_fill : nullptr;
   const double surface_n = options.free_surface_beta * lattice.n0;
   // A fluid particle's pressure follows from its own number density (seed eq. 7): in the same pass.
   parallel_for(n, [&](std::size_t i) {
-    const bool keep = keep_weights && P.kind[i] == Kind::fluid;
-    const double n_i = keep ? number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i))
-                       : fill ? weighted_number_density_of<D>(i, P.position, *fill, list_, r_e)
-                              : number_density_of<D>(i, P.position, list_, r_e);
+    const double n_i =
+        P.kind[i] == Kind::fluid
+            ? number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i), factor)
+        : fill ? weighted_number_density_of<D>(i, P.position, *fill, list_, r_e)
+               : number_density_of<D>(i, P.position, list_, r_e);
     P.number_density[i] = n_i;
     if (P.kind[i] != Kind::fluid) return;
     double p = n_i < surface_n ? 0.0 : eos.pressure(n_i, P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });
-  if (keep_weights) pair_weights_.mark_taken_at(step_count_);
+  pair_weights_.mark_taken_at(step_count_, factor);
   copy_to_ghosts(P, P.number_density);
   copy_to_ghosts(P, P.pressure);
   if (options.surface_pressure == SurfacePressure::extrapolated) {
@@ -469,7 +470,7 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
   const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
   const std::size_t n = P.real_count();
   // Taken by compute_pressure in this step, at these positions (no stage moves a particle in between).
-  const bool weights_taken = pair_weights_.taken_at(step_count_);
+  const bool weights_taken = pair_weights_.taken_at(step_count_, kept_pair_factor(model));
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     const double* w = weights_taken ? pair_weights_.of(list_, i) : nullptr;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fluid/kernel.hpp"
+#include "fluid/listed_pairs.hpp"
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
@@ -145,13 +146,21 @@ Vec<D> pressure_gradient_from_weights(std::size_t i, const Particles<D>& P, cons
 //    the background pressure that makes a compressed square lattice shear-unstable (growth rate ~ sqrt(p / rho) /
 //    dp; measured here: a 0.5 m still tank stirs itself within 0.1 s), and pmin carries an effective background of
 //    about rho g 2 dp. The price: pair forces are not antisymmetric, so momentum is conserved only approximately.
+// The pair term from the factor f = -W'(r) / r (derivative_over_r, fluid/kernel.hpp): (dp f) r_ij. The factor is
+// rounded once on its own, so that the number density's stage can keep it for this stage (fluid/pair_weights.hpp);
+// before stop 27 the term was rounded as (dp (-W')) / r, which differs in the last bit.
+template <int D, bool Symmetric>
+inline Vec<D> derivative_pair_term_f(std::size_t i, std::uint32_t j, const Vec<D>& rij, double f,
+                                     const Particles<D>& P) {
+  const auto& p = P.pressure;
+  const double dp = Symmetric ? p[i] + p[j] : p[j] - p[i];
+  return (dp * f) * rij;
+}
+
 template <int D, bool Symmetric>
 inline Vec<D> derivative_pair_term(std::size_t i, std::uint32_t j, const Vec<D>& rij, double r2, const Particles<D>& P,
                                    double re) {
-  const auto& p = P.pressure;
-  const double r = std::sqrt(r2);
-  const double dp = Symmetric ? p[i] + p[j] : p[j] - p[i];
-  return (dp * -kernel_derivative(r, re) / r) * rij;
+  return derivative_pair_term_f<D, Symmetric>(i, j, rij, derivative_over_r(std::sqrt(r2), re), P);
 }
 
 template <int D, bool Symmetric>
@@ -166,6 +175,21 @@ Vec<D> derivative_pressure_gradient(std::size_t i, const Particles<D>& P, const 
     const double r2 = rij.squaredNorm();
     if (r2 >= re2) continue;
     g += derivative_pair_term<D, Symmetric>(i, j, rij, r2, P, re);
+  }
+  return (1.0 / (kappa * n0)) * g;
+}
+
+// The same from the factors -W'(r) / r the number density kept at these positions (fluid/pair_weights.hpp; f[k]: that
+// of the k-th listed neighbour, +0 beyond re), bit-identical for finite pressures, as the W / r^2 models' above.
+template <int D, bool Symmetric>
+Vec<D> derivative_pressure_gradient_from_factors(std::size_t i, const Particles<D>& P, const NeighborList& nl,
+                                                 double n0, double kappa, const double* f) {
+  const auto& x = P.position;
+  Vec<D> g = Vec<D>::Zero();
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q, ++f) {
+    const std::uint32_t j = *q;
+    if (P.kind[j] != Kind::fluid && *f == 0.0) continue;
+    g += derivative_pair_term_f<D, Symmetric>(i, j, x[j] - x[i], *f, P);
   }
   return (1.0 / (kappa * n0)) * g;
 }
@@ -193,24 +217,25 @@ Vec<D> pressure_gradient_pair(GradientModel m, std::size_t i, std::uint32_t j, c
   return Vec<D>::Zero();
 }
 
-// The models that read the number density's pair weights (the W / r^2 ones).
-inline bool reads_pair_weights(GradientModel m) {
-  return m == GradientModel::standard || m == GradientModel::pmin || m == GradientModel::symmetric;
+// The pair factor model m reads from the number density's stage (fluid/pair_weights.hpp).
+inline PairFactor kept_pair_factor(GradientModel m) {
+  const bool derivative = m == GradientModel::variational || m == GradientModel::difference;
+  return derivative ? PairFactor::derivative_over_r : PairFactor::w_over_r2;
 }
 
-// pair_weights: the W / r^2 factors of i's listed pairs at these positions (fluid/pair_weights.hpp), or nullptr; the
-// W / r^2 models read them, the derivative models take their own.
+// pair_factors: the factors kept_pair_factor(m) of i's listed pairs at these positions (fluid/pair_weights.hpp), or
+// nullptr to compute them here.
 template <int D>
 Vec<D> pressure_gradient(GradientModel m, std::size_t i, const Particles<D>& P, const NeighborList& nl, double re,
-                         double n0, double kappa, const double* pair_weights = nullptr) {
-  if (pair_weights) {
+                         double n0, double kappa, const double* pair_factors = nullptr) {
+  if (const double* f = pair_factors) {
+    using G = GradientModel;
     switch (m) {
-      case GradientModel::standard:
-        return pressure_gradient_from_weights<D, GradientModel::standard>(i, P, nl, re, n0, pair_weights);
-      case GradientModel::pmin: return pressure_gradient_from_weights<D, GradientModel::pmin>(i, P, nl, re, n0, pair_weights);
-      case GradientModel::symmetric:
-        return pressure_gradient_from_weights<D, GradientModel::symmetric>(i, P, nl, re, n0, pair_weights);
-      default: break;
+      case G::standard: return pressure_gradient_from_weights<D, G::standard>(i, P, nl, re, n0, f);
+      case G::pmin: return pressure_gradient_from_weights<D, G::pmin>(i, P, nl, re, n0, f);
+      case G::symmetric: return pressure_gradient_from_weights<D, G::symmetric>(i, P, nl, re, n0, f);
+      case G::variational: return derivative_pressure_gradient_from_factors<D, true>(i, P, nl, n0, kappa, f);
+      case G::difference: return derivative_pressure_gradient_from_factors<D, false>(i, P, nl, n0, kappa, f);
     }
   }
   switch (m) {

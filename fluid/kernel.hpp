@@ -30,6 +30,12 @@ inline double kernel_derivative(double r, double re) {
   return -3.0 * s * s / re;
 }
 
+// The derivative gradients' pair factor (fluid/gradient.hpp): -W'(r) / r for r < re, +0 from re on.
+inline double derivative_over_r(double r, double re) {
+  if (r >= re) return 0.0;
+  return -kernel_derivative(r, re) / r;
+}
+
 // Sums over a square (2-D) or cubic (3-D) lattice of spacing dp, all points within re except the origin.
 template <int D>
 LatticeConstants lattice_constants(double dp, double re) {

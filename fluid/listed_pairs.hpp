@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fluid/kernel.hpp"
 #include "fluid/lanes.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/vec.hpp"
@@ -20,25 +21,40 @@
 namespace slide {
 
 
-// W into w[0 .. count) for the neighbours nb[0 .. count) of a particle at xi, and W / r^2 into w_over_r2 unless it is
-// nullptr (the W / r^2 gradient models' factor, fluid/gradient.hpp; W / 0 for a neighbour on top of xi).
-template <int D>
+// Which factor of each pair a pressure gradient reads at the number density's positions (fluid/pair_weights.hpp):
+// W / r^2 for the W / r^2 models, -W'(r) / r (derivative_over_r, fluid/kernel.hpp) for the kernel-derivative ones.
+enum class PairFactor : std::uint8_t { w_over_r2, derivative_over_r };
+
+// W into w[0 .. count) for the neighbours nb[0 .. count) of a particle at xi, and the pair factor F into factor[0 ..
+// count) unless it is nullptr: W / r^2 (W / 0 for a neighbour on top of xi) or -W'(r) / r (+0 from re on, as
+// derivative_over_r; 3 / (re 0) for a neighbour on top), each bit-identical to the scalar formula: the same operations
+// in the same order, each correctly rounded in every lane.
+template <int D, PairFactor F = PairFactor::w_over_r2>
 void listed_kernel_weights(const Vec<D>& xi, const std::vector<Vec<D>>& x, const std::uint32_t* nb, std::size_t count,
-                           double re, double* w, double* w_over_r2 = nullptr) {
+                           double re, double* w, double* factor = nullptr) {
   constexpr std::size_t L = pair_lanes;
   std::size_t k = 0;
   for (; k + L <= count; k += L) {
     const Lanes r2 = lane_distances_squared<D>(xi, x, [&](std::size_t l) { return nb[k + l]; });
-    Lanes s = Lanes(1.0) - stdx::sqrt(r2) / Lanes(re);
+    const Lanes r = stdx::sqrt(r2);
+    Lanes s = Lanes(1.0) - r / Lanes(re);
     stdx::where(s < Lanes(0.0), s) = 0.0;
     const Lanes weight = s * s * s;
     weight.copy_to(w + k, stdx::element_aligned);
-    if (w_over_r2) (weight / r2).copy_to(w_over_r2 + k, stdx::element_aligned);
+    if (!factor) continue;
+    if constexpr (F == PairFactor::w_over_r2) {
+      (weight / r2).copy_to(factor + k, stdx::element_aligned);
+    } else {
+      // -(-3 s s / re) / r, kernel_derivative's operations; s = 0 from re on gives +0
+      (-((Lanes(-3.0) * s * s) / Lanes(re)) / r).copy_to(factor + k, stdx::element_aligned);
+    }
   }
   for (; k < count; ++k) {
     const double r2 = distance_squared<D>(x[nb[k]], xi);
-    w[k] = kernel_weight(std::sqrt(r2), re);
-    if (w_over_r2) w_over_r2[k] = w[k] / r2;
+    const double r = std::sqrt(r2);
+    w[k] = kernel_weight(r, re);
+    if (!factor) continue;
+    factor[k] = F == PairFactor::w_over_r2 ? w[k] / r2 : derivative_over_r(r, re);
   }
 }
 

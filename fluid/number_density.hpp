@@ -34,16 +34,21 @@ double weighted_number_density_of(std::size_t i, const std::vector<Vec<D>>& x, c
   return n;
 }
 
-// Either sum, keeping each listed neighbour's W(|r_ij|) / |r_ij|^2 (0 beyond re) in w_over_r2[0 .. count) for the W / r^2
-// pressure gradient at the same positions (fluid/pair_weights.hpp). fill: the neighbours' weights, or nullptr for 1
-// each. The terms and their order are those above (a zero weight beyond re adds nothing to a sum that starts at +0
-// and has no negative term), so the sums are bit-identical to them.
+// Either sum, keeping each listed neighbour's pair factor (0 beyond re) in factor[0 .. count) for the pressure
+// gradient at the same positions (fluid/pair_weights.hpp): W(|r_ij|) / |r_ij|^2 or -W'(|r_ij|) / |r_ij|, as the model
+// reads (fluid/listed_pairs.hpp). fill: the neighbours' weights, or nullptr for 1 each. The terms and their order are
+// those above (a zero weight beyond re adds nothing to a sum that starts at +0 and has no negative term), so the sums
+// are bit-identical to them.
 template <int D>
 double number_density_keeping_weights(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>* fill,
-                                      const NeighborList& nl, double re, double* w_over_r2) {
+                                      const NeighborList& nl, double re, double* factor,
+                                      PairFactor kind = PairFactor::w_over_r2) {
   const std::size_t count = nl.count[i];
   double* w = listed_weights_room(count);
-  listed_kernel_weights<D>(x[i], x, nl.begin(i), count, re, w, w_over_r2);
+  if (kind == PairFactor::w_over_r2)
+    listed_kernel_weights<D, PairFactor::w_over_r2>(x[i], x, nl.begin(i), count, re, w, factor);
+  else
+    listed_kernel_weights<D, PairFactor::derivative_over_r>(x[i], x, nl.begin(i), count, re, w, factor);
   double n = 0.0;
   const std::uint32_t* nb = nl.begin(i);
   if (fill)

@@ -1,14 +1,16 @@
 #pragma once
-// The W / r^2 factor (W(|r_ij|) / |r_ij|^2, seed eq. 6 over the squared distance) of every listed pair at one set of
-// positions, laid out as the neighbour list (fluid/neighbor_grid.hpp): particle i's k-th listed neighbour has its
-// factor at of(i)[k], 0 beyond re. The number density takes them at the predicted positions, several pairs at a time
-// (fluid/listed_pairs.hpp), and the W / r^2 pressure gradients, at the same positions, read them: the square root,
-// the division and the branch on the distance of each pair were half the gradient's cost (perf); keeping W made the
-// bench case's loop 11 % faster (stop 25), keeping W / r^2 instead took the gradient's last division per pair
-// (stop 26, docs/profile.md).
+// The pressure gradient's factor of every listed pair at one set of positions (fluid/listed_pairs.hpp PairFactor: W /
+// r^2 for the W / r^2 models, -W'(r) / r for the kernel-derivative ones), laid out as the neighbour list
+// (fluid/neighbor_grid.hpp): particle i's k-th listed neighbour has its factor at of(i)[k], 0 beyond re. The number
+// density takes them at the predicted positions, several pairs at a time, and the pressure gradient, at the same
+// positions, reads them: the square root, the divisions and the branch on the distance of each pair were half the
+// gradient's cost (perf); keeping W made the bench case's loop 11 % faster (stop 25), keeping W / r^2 instead took
+// the gradient's last division per pair (stop 26), keeping -W'(r) / r did the same for the derivative models (stop
+// 27, docs/profile.md).
 #include <cstddef>
 #include <vector>
 
+#include "fluid/listed_pairs.hpp"
 #include "fluid/neighbor_grid.hpp"
 
 namespace slide {
@@ -31,14 +33,19 @@ class PairWeights {
   const double* of(const NeighborList& nl, std::size_t i) const {
     return blocks_[i / NeighborList::block_size].data() + nl.first[i];
   }
-  // Which step's positions the weights are of (-1: none); a rebuilt list or a restored state forgets them.
-  void mark_taken_at(long step) { taken_at_step_ = step; }
+  // Which step's positions the factors are of (-1: none), and which factor they are; a rebuilt list or a restored
+  // state forgets them.
+  void mark_taken_at(long step, PairFactor factor) {
+    taken_at_step_ = step;
+    factor_ = factor;
+  }
   void forget() { taken_at_step_ = -1; }
-  bool taken_at(long step) const { return taken_at_step_ == step; }
+  bool taken_at(long step, PairFactor factor) const { return taken_at_step_ == step && factor_ == factor; }
 
  private:
   std::vector<std::vector<double>> blocks_;
   long taken_at_step_ = -1;
+  PairFactor factor_ = PairFactor::w_over_r2;
 };
 
 }  // namespace slide

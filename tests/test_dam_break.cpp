@@ -1,6 +1,6 @@
 // Dam break against Martin & Moyce (1952): the surge front Z = front / a against T = t sqrt(2 g / a), mean relative
 // error over the reference points with 0 < T <= 3 (all four transcriptions) below 12 % at a/20 (the shipped
-// resolution), a/40 and a/80. And the wall condition of the viscous term against the run-to-run spread.
+// resolution), a/40 and a/80. And what the wall condition of the viscous term changes (free against no slip).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -82,22 +82,26 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
 }
 
 // Issue 12: with water's viscosity the no-slip boundary layer sqrt(nu t) is a fraction of a spacing here, so free-
-// and no-slip walls should give the same flow. But the water height at the wall and the front are chaotic at the
-// particles' scale: a change of g by 1e-12 of itself changes them by 2-6 % of 2a and of Z at T <= 3 (measured
-// here, a/40, point by point; 1e-14 does the same), so no two runs can agree within 1 % point by point. What can be
-// asserted: over T <= 3, averaged over windows of Delta T = 0.5, the free-slip run differs from the no-slip run by no
-// more than the largest of four no-slip runs with g changed by +-1e-12 and +-1e-14 do. Measured (stop 21, the column
-// filled to 796 of its 800 dp^2): free slip moves the height by 1.54 % of 2a and the front by 0.69 % (relative), the
-// four perturbed runs by 1.12 / 1.63 / 0.71 / 0.86 % and 0.71 / 0.17 / 1.09 / 0.70 %: free slip is one more sample
-// of the same spread. On the shipped square-lattice method
-// (cases/dam_break_2d.yaml) the same comparison fails: free slip moves its smoothed front by 6.30 % against a spread
-// of 1.82 / 1.92 % (g +-1e-12, stop 20), a wall effect that method has and the default does not (its height: 3.37 %
-// against 0.86 / 3.78 %).
-// About 5 minutes of one core (six runs, each settling for 1 s first).
-// cases/dam_break_gated_2d.yaml at a/40 to T = 3.05.
-TEST(DamBreak, WallSlipChangesNoMoreThanTheRunToRunSpread) {
+// and no-slip walls should give nearly the same flow. The water height at the wall and the front are chaotic at the
+// particles' scale: a change of g by 1e-12 of itself changes them by up to 1.4 % of 2a and 0.8 % of Z at T <= 3
+// (a/40, smoothed over Delta T = 0.5), so single runs are compared through the means of a few runs each, whose
+// slip perturbs g alike.
+// Measured (stop 27, 7 runs each, g * (1, 1 +-1e-12, 1 +-1e-13, 1 +-1e-14)): free slip moves the mean front by 0.68 %
+// of Z (at T = 2.92, 4.6 standard errors: a small real wall effect, not chaos) and the mean height by 0.85 % of 2a;
+// one run's scatter about its family's mean is up to 0.34 % and 0.56 % (standard deviations). On the shipped
+// square-lattice method (cases/dam_break_2d.yaml) free slip moved the front by 6.30 % and the height by 3.37 % (single
+// runs, stop 20): a wall effect that method has and the default does not. The bound, 2 %, lies between the two: 2.5
+// (height) and 4.7 (front) standard errors of the difference of 3-run means above the default's effect, below the
+// square lattice's.
+// (Until stop 27 this test compared one free-slip run with the spread of four perturbed no-slip runs about one
+// no-slip run: a comparison of single samples that a change in round-off flipped, the free-slip run being 0.93 %
+// from the reference against 0.27-0.70 % for eight perturbed runs.)
+// About 2.5 minutes of one core (six runs, each settling for 1 s first). cases/dam_break_gated_2d.yaml at a/40 to
+// T = 3.05.
+TEST(DamBreak, WallSlipMovesTheMeanFrontAndHeightByUnderTwoPercent) {
   const fs::path dir = fresh_directory("dam_break_slip");
-  auto run = [&](const std::string& name, const std::string& sets) {
+  using Smoothed = std::pair<std::vector<double>, std::vector<double>>;  // H / 2a and Z, smoothed
+  auto run = [&](const std::string& name, const std::string& sets) -> Smoothed {
     const fs::path out = dir / name;
     const CommandResult r = run_command(slide_binary() + " run " +
                                         (source_dir() / "cases/dam_break_gated_2d.yaml").string() + " --quiet --out " +
@@ -105,30 +109,29 @@ TEST(DamBreak, WallSlipChangesNoMoreThanTheRunToRunSpread) {
                                         " --set output.snapshots=false" + sets);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     const double T_max = 3.0, window = 0.5;
-    return std::pair{smoothed(read_columns(out / "surge_front.csv", "T", "H_over_2a"), T_max, window),
-                     smoothed(read_columns(out / "surge_front.csv", "T", "Z"), T_max, window)};
+    return {smoothed(read_columns(out / "surge_front.csv", "T", "H_over_2a"), T_max, window),
+            smoothed(read_columns(out / "surge_front.csv", "T", "Z"), T_max, window)};
   };
-  const auto no_slip = run("no_slip", "");
-  const auto free_slip = run("free_slip", " --set method.wall_slip=free_slip");
-  // The spread of the chaos: four no-slip runs with g changed by +-1e-12 and +-1e-14 of itself.
-  std::vector<std::pair<std::vector<double>, std::vector<double>>> perturbed;
-  for (const std::string g : {"9.81000000001", "9.80999999999", "9.8100000000001", "9.8099999999999"})
-    perturbed.push_back(run("g_" + g, " --set gravity=[0,-" + g + "]"));
-  const double height_slip = largest_difference(no_slip.first, free_slip.first, false);
-  const double front_slip = largest_difference(no_slip.second, free_slip.second, true);
-  double height_spread = 0.0, front_spread = 0.0;
-  std::string spreads;
-  for (const auto& p : perturbed) {
-    const double h = largest_difference(no_slip.first, p.first, false);
-    const double z = largest_difference(no_slip.second, p.second, true);
-    height_spread = std::max(height_spread, h), front_spread = std::max(front_spread, z);
-    spreads += fmt::format(" {:.2f}/{:.2f}", 100 * h, 100 * z);
-  }
-  std::printf("dam break a/40, T <= 3, smoothed over Delta T = 0.5: free against no slip: height %.2f %% of 2a, "
-              "front %.2f %%; g * (1 +-1e-12), (1 +-1e-14), height/front %%:%s\n",
-              100 * height_slip, 100 * front_slip, spreads.c_str());
-  EXPECT_LE(height_slip, height_spread);
-  EXPECT_LE(front_slip, front_spread);
+  // Each wall condition's mean over g * (1, 1 + 1e-12, 1 - 1e-12).
+  auto family_mean = [&](const std::string& slip) {
+    Smoothed mean;
+    const std::vector<std::string> gs{"9.81", "9.81000000001", "9.80999999999"};
+    for (const std::string& g : gs) {
+      const Smoothed s = run(slip + "_" + g, " --set method.wall_slip=" + slip + " --set gravity=[0,-" + g + "]");
+      if (mean.first.empty()) mean = {std::vector<double>(s.first.size()), std::vector<double>(s.second.size())};
+      for (std::size_t k = 0; k < s.first.size(); ++k)
+        mean.first[k] += s.first[k] / gs.size(), mean.second[k] += s.second[k] / gs.size();
+    }
+    return mean;
+  };
+  const Smoothed no_slip = family_mean("no_slip"), free_slip = family_mean("free_slip");
+  const double height = largest_difference(no_slip.first, free_slip.first, false);
+  const double front = largest_difference(no_slip.second, free_slip.second, true);
+  std::printf("dam break a/40, T <= 3, smoothed over Delta T = 0.5, means of 3 runs (g * (1, 1 +-1e-12)): free against "
+              "no slip: height %.2f %% of 2a, front %.2f %% of Z\n",
+              100 * height, 100 * front);
+  EXPECT_LT(height, 0.02);
+  EXPECT_LT(front, 0.02);
 }
 
 }  // namespace

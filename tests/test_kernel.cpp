@@ -21,6 +21,18 @@ TEST(Kernel, SeedFormula) {
   }
 }
 
+// The derivative gradients' pair factor -W'(r) / r = 3 (1 - r/re)^2 / (re r): exact values, and +0 (not -0) from re on,
+// so that a kept factor beyond re adds nothing to a sum.
+TEST(Kernel, DerivativeOverR) {
+  EXPECT_EQ(derivative_over_r(1.0, 2.0), 0.375);   // 3 (1/2)^2 / (2 * 1)
+  EXPECT_EQ(derivative_over_r(0.5, 2.0), 1.6875);  // 3 (3/4)^2 / (2 * 0.5)
+  for (double r : {2.0, 2.5}) {
+    EXPECT_EQ(derivative_over_r(r, 2.0), 0.0);
+    EXPECT_FALSE(std::signbit(derivative_over_r(r, 2.0)));
+  }
+  EXPECT_TRUE(std::isinf(derivative_over_r(0.0, 2.0)));
+}
+
 // Lattice sums written out by hand for re = 2.1 dp in 2-D: neighbours at 1 (4), sqrt 2 (4) and 2 (4) spacings.
 TEST(Kernel, LatticeConstants2DByHand) {
   const double dp = 0.01, re = 2.1 * dp;

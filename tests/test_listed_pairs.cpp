@@ -67,6 +67,20 @@ void expect_weights_match_the_kernel() {
     std::vector<double> alone(count);
     listed_kernel_weights<D>(xi, x, nb.data(), count, re, alone.data());
     for (std::size_t k = 0; k < count; ++k) ASSERT_EQ(bits(alone[k]), bits(w[k]));
+    // The derivative models' factor -W'(r) / r instead: the same weights, and the factor derivative_over_r gives
+    // (+0 from re on), 3 / (re 0) = +inf on top of xi.
+    std::vector<double> w_d(count + 1, -1.0), derivative(count + 1, -1.0);
+    listed_kernel_weights<D, PairFactor::derivative_over_r>(xi, x, nb.data(), count, re, w_d.data(), derivative.data());
+    for (std::size_t k = 0; k < count; ++k) {
+      const double r = std::sqrt(distance_squared<D>(x[nb[k]], xi));
+      ASSERT_EQ(bits(w_d[k]), bits(w[k])) << "count " << count << " pair " << k;
+      if (r > 0.0) {
+        ASSERT_EQ(bits(derivative[k]), bits(derivative_over_r(r, re))) << "count " << count << " pair " << k;
+      } else {
+        ASSERT_TRUE(std::isinf(derivative[k]) && derivative[k] > 0.0);
+      }
+    }
+    ASSERT_EQ(derivative[count], -1.0) << "wrote past the list";
   }
   EXPECT_GT(zero, 0u);
   EXPECT_GT(inside, 0u);

@@ -58,9 +58,10 @@ TEST(Operators, GradientOfLinearFieldExactHexagonal) {
   expect_gradient_of_linear_field_exact<2>(LatticeKind::hexagonal);
 }
 
-// The pair weights the number density keeps (fluid/pair_weights.hpp) give the same number densities and, read by the
-// pressure gradient at the same positions, the same gradients, bit for bit: on disordered particles with a wall row
-// (normal split), filled boundary particles, and a list built with a skin (listed pairs beyond re have weight 0).
+// The pair factors the number density keeps (fluid/pair_weights.hpp) give the same number densities and, read by the
+// pressure gradient at the same positions, the same gradients, bit for bit, for every model (W / r^2 or -W'(r) / r as
+// it reads): on disordered particles with a wall row (normal split), filled boundary particles, and a list built with
+// a skin (listed pairs beyond re have factor 0).
 TEST(Operators, KeptPairWeightsGiveBitIdenticalNumberDensityAndGradients) {
   Lattice<2> L;
   auto& P = L.particles;
@@ -94,6 +95,10 @@ TEST(Operators, KeptPairWeightsGiveBitIdenticalNumberDensityAndGradients) {
     for (std::size_t k = 0; k < list.count[i]; ++k) beyond_re += w[k] == 0.0;
     for (GradientModel m : {GradientModel::standard, GradientModel::pmin, GradientModel::symmetric,
                             GradientModel::variational, GradientModel::difference}) {
+      // The factor this model reads, kept by the number density's stage (whose sum does not depend on it).
+      const double kept = number_density_keeping_weights<2>(i, P.position, nullptr, list, L.re, weights.of(list, i),
+                                                            kept_pair_factor(m));
+      ASSERT_EQ(kept, number_density_of<2>(i, P.position, list, L.re)) << "particle " << i;
       const Vec<2> read = pressure_gradient<2>(m, i, P, list, L.re, L.constants.n0, L.constants.kappa, w);
       const Vec<2> taken = pressure_gradient<2>(m, i, P, list, L.re, L.constants.n0, L.constants.kappa);
       ASSERT_EQ(read[0], taken[0]) << to_string(m) << " particle " << i;
