@@ -470,11 +470,11 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
   const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
   const std::size_t n = P.real_count();
   // Taken by compute_pressure in this step, at these positions (no stage moves a particle in between).
-  const bool weights_taken = pair_weights_.taken_at(step_count_, kept_pair_factor(model));
+  const bool factors_taken = pair_weights_.taken_at(step_count_, kept_pair_factor(model));
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
-    const double* w = weights_taken ? pair_weights_.of(list_, i) : nullptr;
-    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa, w);
+    const double* f = factors_taken ? pair_weights_.of(list_, i) : nullptr;
+    scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa, f);
   });
   if constexpr (D == 2) {
     if (bodies_) bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());

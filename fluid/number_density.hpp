@@ -42,10 +42,10 @@ double weighted_number_density_of(std::size_t i, const std::vector<Vec<D>>& x, c
 template <int D>
 double number_density_keeping_weights(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>* fill,
                                       const NeighborList& nl, double re, double* factor,
-                                      PairFactor kind = PairFactor::w_over_r2) {
+                                      PairFactor which = PairFactor::w_over_r2) {
   const std::size_t count = nl.count[i];
   double* w = listed_weights_room(count);
-  if (kind == PairFactor::w_over_r2)
+  if (which == PairFactor::w_over_r2)
     listed_kernel_weights<D, PairFactor::w_over_r2>(x[i], x, nl.begin(i), count, re, w, factor);
   else
     listed_kernel_weights<D, PairFactor::derivative_over_r>(x[i], x, nl.begin(i), count, re, w, factor);

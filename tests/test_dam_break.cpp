@@ -7,7 +7,6 @@
 #include <cmath>
 #include <sstream>
 
-#include <fmt/format.h>
 
 #include "cases/csv_table.hpp"
 #include "tests/cli_helpers.hpp"
@@ -84,18 +83,19 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
 // Issue 12: with water's viscosity the no-slip boundary layer sqrt(nu t) is a fraction of a spacing here, so free-
 // and no-slip walls should give nearly the same flow. The water height at the wall and the front are chaotic at the
 // particles' scale: a change of g by 1e-12 of itself changes them by up to 1.4 % of 2a and 0.8 % of Z at T <= 3
-// (a/40, smoothed over Delta T = 0.5), so single runs are compared through the means of a few runs each, whose
-// slip perturbs g alike.
+// (a/40, smoothed over Delta T = 0.5), so the two wall conditions are compared through 3-run means, both families
+// perturbing g alike.
 // Measured (stop 27, 7 runs each, g * (1, 1 +-1e-12, 1 +-1e-13, 1 +-1e-14)): free slip moves the mean front by 0.68 %
 // of Z (at T = 2.92, 4.6 standard errors: a small real wall effect, not chaos) and the mean height by 0.85 % of 2a;
 // one run's scatter about its family's mean is up to 0.34 % and 0.56 % (standard deviations). On the shipped
 // square-lattice method (cases/dam_break_2d.yaml) free slip moved the front by 6.30 % and the height by 3.37 % (single
 // runs, stop 20): a wall effect that method has and the default does not. The bound, 2 %, lies between the two: 2.5
 // (height) and 4.7 (front) standard errors of the difference of 3-run means above the default's effect, below the
-// square lattice's.
+// square lattice's. The largest difference is taken over T (about six independent windows), so a change in
+// round-off could still flip the height's comparison with a chance of a few percent.
 // (Until stop 27 this test compared one free-slip run with the spread of four perturbed no-slip runs about one
-// no-slip run: a comparison of single samples that a change in round-off flipped, the free-slip run being 0.93 %
-// from the reference against 0.27-0.70 % for eight perturbed runs.)
+// no-slip run: a comparison of single samples that a change in round-off flipped: the free-slip run's front was
+// 0.93 % from the reference's, the fronts of eight no-slip runs with g perturbed 0.27-0.70 %.)
 // About 2.5 minutes of one core (six runs, each settling for 1 s first). cases/dam_break_gated_2d.yaml at a/40 to
 // T = 3.05.
 TEST(DamBreak, WallSlipMovesTheMeanFrontAndHeightByUnderTwoPercent) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 
 #include "fluid/equation_of_state.hpp"
@@ -58,10 +60,30 @@ TEST(Operators, GradientOfLinearFieldExactHexagonal) {
   expect_gradient_of_linear_field_exact<2>(LatticeKind::hexagonal);
 }
 
+std::uint64_t bits(double v) {
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// The gradient summed pair by pair, each pair's factor computed on its own and pairs beyond re skipped.
+Vec<2> pair_by_pair_gradient(GradientModel m, std::size_t i, const Particles<2>& P, const NeighborList& nl, double re,
+                             double n0, double kappa) {
+  switch (m) {
+    case GradientModel::standard: return pressure_gradient_of<2, GradientModel::standard>(i, P, nl, re, n0);
+    case GradientModel::pmin: return pressure_gradient_of<2, GradientModel::pmin>(i, P, nl, re, n0);
+    case GradientModel::symmetric: return pressure_gradient_of<2, GradientModel::symmetric>(i, P, nl, re, n0);
+    case GradientModel::variational: return derivative_pressure_gradient<2, true>(i, P, nl, re, n0, kappa);
+    case GradientModel::difference: return derivative_pressure_gradient<2, false>(i, P, nl, re, n0, kappa);
+  }
+  return Vec<2>::Zero();
+}
+
 // The pair factors the number density keeps (fluid/pair_weights.hpp) give the same number densities and, read by the
-// pressure gradient at the same positions, the same gradients, bit for bit, for every model (W / r^2 or -W'(r) / r as
-// it reads): on disordered particles with a wall row (normal split), filled boundary particles, and a list built with
-// a skin (listed pairs beyond re have factor 0).
+// pressure gradient at the same positions, the same gradients as the pair-by-pair sums, bit for bit, for every model
+// (W / r^2 or -W'(r) / r as it reads), as does the gradient that takes its factors itself: on disordered particles
+// with a wall row (normal split), filled boundary particles, and a list built with a skin (listed pairs beyond re have
+// factor 0).
 TEST(Operators, KeptPairWeightsGiveBitIdenticalNumberDensityAndGradients) {
   Lattice<2> L;
   auto& P = L.particles;
@@ -101,11 +123,33 @@ TEST(Operators, KeptPairWeightsGiveBitIdenticalNumberDensityAndGradients) {
       ASSERT_EQ(kept, number_density_of<2>(i, P.position, list, L.re)) << "particle " << i;
       const Vec<2> read = pressure_gradient<2>(m, i, P, list, L.re, L.constants.n0, L.constants.kappa, w);
       const Vec<2> taken = pressure_gradient<2>(m, i, P, list, L.re, L.constants.n0, L.constants.kappa);
-      ASSERT_EQ(read[0], taken[0]) << to_string(m) << " particle " << i;
-      ASSERT_EQ(read[1], taken[1]) << to_string(m) << " particle " << i;
+      const Vec<2> pairwise = pair_by_pair_gradient(m, i, P, list, L.re, L.constants.n0, L.constants.kappa);
+      for (int k = 0; k < 2; ++k) {
+        ASSERT_EQ(bits(read[k]), bits(pairwise[k])) << to_string(m) << " particle " << i;
+        ASSERT_EQ(bits(taken[k]), bits(pairwise[k])) << to_string(m) << " particle " << i;
+      }
     }
   }
   EXPECT_GT(beyond_re, P.size());  // the skin lists pairs beyond re, whose kept weight is 0
+}
+
+// The kept factors are read only at the step, and as the factor, they were taken at: the gradient falls back to
+// taking its own otherwise, with the same result, so a guard that always failed would show only in the speed.
+TEST(Operators, KeptPairFactorsAreReadOnlyWhereTaken) {
+  NeighborList list;
+  list.blocks.assign(2, std::vector<std::uint32_t>(3));
+  PairWeights kept;
+  kept.shape_like(list);
+  EXPECT_FALSE(kept.taken_at(0, PairFactor::w_over_r2));
+  kept.mark_taken_at(7, PairFactor::derivative_over_r);
+  EXPECT_TRUE(kept.taken_at(7, PairFactor::derivative_over_r));
+  EXPECT_FALSE(kept.taken_at(7, PairFactor::w_over_r2));
+  EXPECT_FALSE(kept.taken_at(8, PairFactor::derivative_over_r));
+  kept.forget();
+  EXPECT_FALSE(kept.taken_at(7, PairFactor::derivative_over_r));
+  kept.mark_taken_at(9, PairFactor::w_over_r2);
+  kept.shape_like(list);  // a new list's shape: nothing taken on it yet
+  EXPECT_FALSE(kept.taken_at(9, PairFactor::w_over_r2));
 }
 
 template <int D>
