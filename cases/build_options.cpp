@@ -27,6 +27,7 @@ void read_method(const YAML::Node& r, MethodOptions& o) {
   o.collision_distance_over_dp = m["collision_distance"].as<double>();
   o.collision_restitution = m["collision_restitution"].as<double>();
   o.wall_pressure = wall_pressure_names.parse(m["wall_pressure"].as<std::string>());
+  o.pore_pressure = pore_pressure_names.parse(m["pore_pressure"].as<std::string>());
 }
 
 // time_step.*

@@ -1,7 +1,12 @@
 // Step: what a run writes besides the particles' state: wave gauges, the dam-break surge front, the velocity
 // profile, free-surface profiles, and the output intervals.
-#include <algorithm>
+#include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "cases/csv_table.hpp"
 #include "cases/scene_build.hpp"
 
 namespace slide::cases {
@@ -39,6 +44,41 @@ ProfileSpec read_profiles(const YAML::Node& pn, double dp) {
   return out;
 }
 
+// diagnostics.slide_shapes: the measured surfaces grouped by their time (rows in any order), in increasing time.
+std::optional<SlideShapesSpec> read_slide_shapes(const SceneBuild& b, const YAML::Node& sn) {
+  const std::string file = sn["file"].as<std::string>();
+  if (file.empty()) return std::nullopt;
+  const std::string key = "diagnostics.slide_shapes.file";
+  const std::filesystem::path path = b.scene_dir / file;
+  CsvTable t;
+  try {
+    t = read_csv(path);
+  } catch (const std::runtime_error&) {
+    throw SceneError(key, "cannot read " + path.string());
+  }
+  const int ct = t.find_column("t_exp_s"), cx = t.find_column("x_m"), cy = t.find_column("y_m");
+  if (ct < 0 || cx < 0 || cy < 0)
+    throw SceneError(key, path.string() + ": the header must name the columns t_exp_s, x_m and y_m");
+  std::map<double, std::vector<Vec<2>>> by_time;
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    try {
+      const auto& f = t.rows[k];
+      const double time = std::stod(f.at(ct)), x = std::stod(f.at(cx)), y = std::stod(f.at(cy));
+      if (!std::isfinite(time) || !std::isfinite(x) || !std::isfinite(y)) throw std::invalid_argument("not finite");
+      by_time[time].emplace_back(x, y);
+    } catch (const std::exception&) {
+      throw SceneError(key, fmt::format("{} line {}: t_exp_s, x_m and y_m must be finite numbers", path.string(),
+                                        t.line_numbers[k]));
+    }
+  }
+  if (by_time.size() < 2) throw SceneError(key, path.string() + ": needs the start and at least one later time");
+  SlideShapesSpec spec{file, sn["time_offset"].as<double>(), {}};
+  for (auto& [time, points] : by_time) spec.shapes.push_back({time, std::move(points)});
+  if (spec.shapes.front().time_measured + spec.time_offset < 0.0)
+    throw SceneError("diagnostics.slide_shapes.time_offset", "the first measured time falls before t = 0");
+  return spec;
+}
+
 OutputSpec read_output(const YAML::Node& on) {
   return {on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>(),
           on["checkpoint_interval"].as<double>()};
@@ -53,6 +93,7 @@ void read_outputs(SceneBuild& b) {
   scene.velocity_profile = read_velocity_profile(b.r["diagnostics"]["velocity_profile"], b.options().lattice, b.dp);
   scene.profiles = read_profiles(b.r["profiles"], b.dp);
   scene.output = read_output(b.r["output"]);
+  scene.slide_shapes = read_slide_shapes(b, b.r["diagnostics"]["slide_shapes"]);
   for (const auto& t : b.r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());
   if (!std::is_sorted(scene.slide_outline_times.begin(), scene.slide_outline_times.end()))
     throw SceneError("output.slide_outline_times", "must be in increasing order");

@@ -37,6 +37,18 @@ struct VelocityProfileSpec {
   double bin = 0.0;       // m
 };
 
+// diagnostics.slide_shapes (slide_shapes.csv, coupling/slide_shape_error.hpp): measured upper surfaces of a slide, each
+// compared with the model's at the measured time plus time_offset (the first step at or after it).
+struct MeasuredShape {
+  double time_measured = 0.0;  // s, the measurement's clock
+  std::vector<Vec<2>> points;  // m, digitized (x, y) of the upper surface
+};
+struct SlideShapesSpec {
+  std::string file;          // as the scene names it
+  double time_offset = 0.0;  // s, model time = measured time + time_offset
+  std::vector<MeasuredShape> shapes;  // in increasing time; the first is the start (the front's travel origin)
+};
+
 struct ProfileSpec {
   std::vector<double> times;  // s, increasing
   double x_min = 0.0, x_max = 0.0, spacing = 0.0;
@@ -110,6 +122,7 @@ struct Scene {
   std::vector<BodyReport> bodies;
   std::vector<SlideReport> slides;
   std::vector<double> slide_outline_times;  // s, increasing
+  std::optional<SlideShapesSpec> slide_shapes;
   std::optional<Relaxation> settling;  // the settled start, when used
   double body_sample_interval = 0.0;  // s, bodies.csv rows
 };

@@ -174,6 +174,12 @@ Schema method_schema() {
                                    "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
                                    "et al. 2012) (fluid/wall_pressure.hpp)",
                                    wall_pressure_names.names(), std::string(to_string(MethodOptions{}.wall_pressure)))},
+       {"pore_pressure", S::choice("pore water pressure p_w of a sediment under water: the Mohr-Coulomb and mu(I) "
+                                   "strengths and the basal friction act on the effective pressure p - p_w; "
+                                   "hydrostatic: p_w = rho_w g times the depth below the water's local surface (0 "
+                                   "above it; the drained limit); none: on the total pressure p, as for a dry "
+                                   "material (fluid/pore_pressure.hpp)",
+                                   pore_pressure_names.names(), std::string(to_string(MethodOptions{}.pore_pressure)))},
        {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
                                           "(fluid/artificial_viscosity.hpp)",
                                           "", 0.0, 0.0, 1.0)},
@@ -262,6 +268,19 @@ Schema profiles_schema() {
       false);
 }
 
+Schema slide_shapes_schema() {
+  return S::map(
+      "a slide's measured upper surfaces (slide_shapes.csv: the front's error in per cent of its measured travel and "
+      "the rms vertical distance between the surfaces, coupling/slide_shape_error.hpp) for the first deformable slide, "
+      "or the first body where there is none",
+      {{"file", S::text("CSV of the measured surfaces, relative to the scene file, with the columns t_exp_s, x_m and "
+                        "y_m (the measured time and the digitized points); its first time is the start, the origin of "
+                        "the front's travel; empty: off",
+                        "")},
+       {"time_offset", S::number("model time = measured time + time_offset", "s", 0.0)}},
+      false);
+}
+
 Schema surge_schema() {
   return S::map(
       "dam-break diagnostics (surge_front.csv): front of the largest connected body of water (particles closer "
@@ -331,7 +350,8 @@ Schema make_schema() {
        {"gauges", S::list("wave gauges", gauge_schema())},
        {"profiles", profiles_schema()},
        {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge_schema()},
-                                                              {"velocity_profile", velocity_profile_schema()}},
+                                                              {"velocity_profile", velocity_profile_schema()},
+                                                              {"slide_shapes", slide_shapes_schema()}},
                                false)}});
 }
 

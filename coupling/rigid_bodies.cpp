@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "coupling/dry_face_pressure.hpp"
 #include "fluid/collision.hpp"
 #include "fluid/parallel.hpp"
 
@@ -15,6 +16,10 @@ Vec<2> rotate(const Vec<2>& v, double c, double s) { return Vec<2>(c * v[0] - s 
 int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density,
                      double placed_angle_rad) {
   const int b = world.add_body(spec);
+  const auto centre = world.state(b).position;
+  std::vector<Vec<2>> local;
+  for (const auto& v : rigid::counter_clockwise(spec.outline)) local.emplace_back(v[0] - centre[0], v[1] - centre[1]);
+  outline_.push_back(std::move(local));
   names.push_back(name);
   placed_angle.push_back(placed_angle_rad);
   motion.push_back(m);
@@ -127,6 +132,27 @@ void RigidBodies::add_collision_forces(const Particles<2>& P, const NeighborList
     const double mass = P.density[i] * volume;
     return -(mass / dt) * collision_pair_change<2>(i, j, P, distance, restitution);
   });
+}
+
+std::vector<Vec<2>> RigidBodies::outline_now(int b) const {
+  const auto st = world.state(b);
+  const double c = std::cos(st.angle), sn = std::sin(st.angle);
+  std::vector<Vec<2>> outline;
+  for (const auto& v : outline_[static_cast<std::size_t>(b)])
+    outline.push_back(Vec<2>(st.position[0], st.position[1]) + rotate(v, c, sn));
+  return outline;
+}
+
+void RigidBodies::add_dry_face_pressure(const Particles<2>& P, const NeighborGrid<2>& grid,
+                                        const PorePressureField<2>& pore, double dp) {
+  if (!pore.surface) return;
+  for (std::size_t b = 0; b < size(); ++b) {
+    const auto st = world.state(int(b));
+    const ForceAndTorque f =
+        dry_face_pressure(outline_now(int(b)), Vec<2>(st.position[0], st.position[1]), P, grid, pore, dp);
+    pending_[b].pressure += f.force;
+    pending_[b].pressure_torque += f.torque;
+  }
 }
 
 void RigidBodies::set_settling(bool on) {

@@ -13,6 +13,7 @@
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
+#include "fluid/pore_pressure.hpp"
 #include "fluid/state_stream.hpp"
 #include "fluid/viscosity.hpp"
 #include "rigid/prescribed_motion.hpp"
@@ -56,6 +57,8 @@ class RigidBodies {
           double placed_angle_rad = 0.0);
   std::size_t size() const { return names.size(); }
 
+  // Body b's outline where it is now, counter-clockwise, m.
+  std::vector<Vec<2>> outline_now(int b) const;
   // Pose and velocity of body b now.
   rigid::PlanarState state(int b) const { return world.state(b); }
   // Its angle as the scene states orientations: placed_angle + the rotation since creation, rad.
@@ -74,6 +77,10 @@ class RigidBodies {
                            double kappa, double volume);
   void add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance, double restitution,
                             double volume, double dt);
+  // The water's pressure on the faces no fluid particle touches under water, the contact with a wall: beside the pair
+  // terms above, called with them (coupling/dry_face_pressure.hpp). `grid` bins P's positions.
+  void add_dry_face_pressure(const Particles<2>& P, const NeighborGrid<2>& grid, const PorePressureField<2>& pore,
+                             double dp);
 
   // Mean fluid and contact forces since the last call (time-weighted over the steps in between), for outputs:
   // a single step's force is noisy, the momentum a body received over an interval is not.
@@ -108,6 +115,7 @@ class RigidBodies {
   std::vector<MeanForces> impulse_;  // force x time since the last take_mean_forces
   double impulse_time_ = 0.0;
   std::vector<Vec<2>> scratch_;
+  std::vector<std::vector<Vec<2>>> outline_;  // each body's outline about its centre of mass, as created (ccw)
   std::vector<rigid::PlanarState> placed_state_;  // at the last placement
   double placed_time_ = 0.0;
   bool settling_ = false;

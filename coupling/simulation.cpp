@@ -52,6 +52,11 @@ void Simulation<D>::initialise() {
   for (const auto& ph : phases) rheology_ = rheology_ || !std::holds_alternative<Newtonian>(ph.rheology);
   basal_friction_ = false;
   for (const auto& ph : phases) basal_friction_ = basal_friction_ || std::isfinite(ph.basal_friction);
+  // The water's surface serves the frictional strengths' pore pressure and the water under bodies resting on walls.
+  bool frictional = basal_friction_ || bodies_ != nullptr;
+  for (const auto& ph : phases) frictional = frictional || depends_on_pressure(ph.rheology);
+  pore_water_ = frictional && options.pore_pressure == PorePressureModel::hydrostatic && !phases.empty() &&
+                std::holds_alternative<Newtonian>(phases[0].rheology) && options.gravity.norm() > 0.0;
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   Vec<D> grid_lo = options.domain_lo, grid_hi = options.domain_hi;
   if (options.periodic_x) {
@@ -68,6 +73,7 @@ void Simulation<D>::initialise() {
   }
   update_neighbors(true);
   compute_pressure();
+  update_water_surface();
 }
 
 template <int D>
@@ -240,6 +246,7 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
     position_at_step_start_.resize(particles.real_count());
     parallel_for(particles.real_count(), [&](std::size_t i) { position_at_step_start_[i] = particles.position[i]; });
   }
+  update_water_surface();
   update_viscosity();
   predict_with_viscosity_and_gravity(dt);
   compute_pressure();  // at the predicted positions
@@ -353,6 +360,7 @@ void Simulation<D>::record_largest_compression(double n_max) {
 template <int D>
 void Simulation<D>::update_viscosity() {
   if (!rheology_ && !basal_friction_) return;
+  const PorePressureField<D> pore = pore_pressure_field();
   auto& P = particles;
   const std::size_t n = P.real_count();
   const double r_e = re();
@@ -366,7 +374,9 @@ void Simulation<D>::update_viscosity() {
         return;
       }
       const double rate = shear_rate<D>(i, P, list_, r_e, lattice.n0, options.viscous_wall());
-      const double pressure = depends_on_pressure(model) ? confining_pressure<D>(i, P, list_, r_e) : P.pressure[i];
+      const double pressure = depends_on_pressure(model)
+                                  ? effective_pressure(confining_pressure<D>(i, P, list_, r_e), pore.at(P.position[i]))
+                                  : P.pressure[i];
       P.viscosity[i] = effective_viscosity(model, rate, pressure);
     });
     copy_to_ghosts(P, P.viscosity);
@@ -377,11 +387,27 @@ void Simulation<D>::update_viscosity() {
       if (P.kind[i] != Kind::fluid) return;
       const double mu_b = phases[P.phase[i]].basal_friction;
       if (!std::isfinite(mu_b)) return;
-      const WallShear s = wall_shear<D>(i, P, list_, r_e, wall.min_distance, options.gravity);
+      const WallShear s = wall_shear<D>(i, P, list_, r_e, wall.min_distance, options.gravity, pore);
       P.wall_fraction[i] = coulomb_wall_fraction(P.viscosity[i], mu_b, s.normal_stress, s.rate);
     });
     copy_to_ghosts(P, P.wall_fraction);
   }
+}
+
+// The water's surface, from the first phase's particles where they are (fluid/water_surface.hpp): at the start of
+// each step, for the pore pressure of the step's frictional strengths (lagged like the viscosity) and the water
+// under bodies resting on walls (coupling/dry_face_pressure.hpp).
+template <int D>
+void Simulation<D>::update_water_surface() {
+  if (!pore_water_) return;
+  const auto& P = particles;
+  water_surface_.build(P, options.gravity, options.dp, [&](std::size_t i) { return P.phase[i] == 0; });
+}
+
+template <int D>
+PorePressureField<D> Simulation<D>::pore_pressure_field() const {
+  if (!pore_water_) return {};
+  return {phases[0].density_kg_m3, options.gravity.norm(), &water_surface_};
 }
 
 // Viscosity and gravity give the predicted velocity and position (fluid only). Explicitly, the viscous term is
@@ -477,7 +503,10 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
     scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa, f);
   });
   if constexpr (D == 2) {
-    if (bodies_) bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
+    if (bodies_) {
+      bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
+      bodies_->add_dry_face_pressure(P, grid_, pore_pressure_field(), options.dp);
+    }
   }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;

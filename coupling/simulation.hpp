@@ -17,6 +17,8 @@
 
 #include "fluid/equation_of_state.hpp"
 #include "fluid/fluid_options.hpp"
+#include "fluid/pore_pressure.hpp"
+#include "fluid/water_surface.hpp"
 #include "fluid/gradient.hpp"
 #include "fluid/image_neighbours.hpp"
 #include "fluid/implicit_viscosity.hpp"
@@ -133,6 +135,11 @@ class Simulation {
   const ViscousSolveReport& last_viscous_solve() const { return last_viscous_solve_; }
   double max_fluid_speed() const;
 
+  // The pore water's pressure anywhere (fluid/pore_pressure.hpp), from the water's surface as of the start of the
+  // latest step (or initialise()); zero everywhere where the scene has no pore water: no phase of a frictional
+  // strength, method.pore_pressure none, the first phase not Newtonian (the water is the first phase), or no gravity.
+  PorePressureField<D> pore_pressure_field() const;
+
   // Fluid number density at an arbitrary point (fluid particles only), for free-surface detection by gauges.
   double fluid_number_density_at(const Vec<D>& point) const;
 
@@ -140,6 +147,7 @@ class Simulation {
   // The stages of one step (DESIGN.md, "The step loop").
   void update_neighbors(bool force);
   void update_viscosity();
+  void update_water_surface();
   void record(const ViscousSolveReport& r);
   void predict_with_viscosity_and_gravity(double dt);
   void compute_pressure();
@@ -178,6 +186,8 @@ class Simulation {
   bool rheology_ = false;  // some phase is non-Newtonian
   bool rheology_suspended_ = false;
   bool basal_friction_ = false;  // some phase has a Coulomb basal friction (fluid/basal_friction.hpp)
+  bool pore_water_ = false;  // the frictional strengths act on the effective stress (pore_pressure_field)
+  WaterSurface<D> water_surface_;  // of the first phase (the water), when pore_water_
   ImplicitViscosity implicit_viscosity_;
   ViscousSolveStats viscous_solves_;
   ViscousSolveReport last_viscous_solve_;

@@ -73,4 +73,27 @@ inline std::vector<Vec<2>> slide_upper_surface(const Particles<2>& P, std::uint8
   return out;
 }
 
+// A polygon's upper surface (a rigid slide's outline, any orientation): for every column of width `column_width` whose
+// centre lies within the polygon's x range, the centre and the highest point of the outline above it, in increasing x.
+inline std::vector<Vec<2>> polygon_upper_surface(const std::vector<Vec<2>>& outline, double column_width) {
+  std::vector<Vec<2>> out;
+  if (outline.size() < 3) return out;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& v : outline) lo = std::min(lo, v[0]), hi = std::max(hi, v[0]);
+  for (long k = static_cast<long>(std::floor(lo / column_width)); (k + 0.5) * column_width <= hi; ++k) {
+    const double x = (k + 0.5) * column_width;
+    if (x < lo) continue;
+    double top = -std::numeric_limits<double>::infinity();
+    for (std::size_t m = 0; m < outline.size(); ++m) {
+      const Vec<2>& a = outline[m];
+      const Vec<2>& b = outline[(m + 1) % outline.size()];
+      if ((x < std::min(a[0], b[0])) || (x > std::max(a[0], b[0]))) continue;
+      const double y = a[0] == b[0] ? std::max(a[1], b[1]) : a[1] + (x - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
+      top = std::max(top, y);
+    }
+    out.emplace_back(x, top);
+  }
+  return out;
+}
+
 }  // namespace slide

@@ -28,9 +28,11 @@
 // carries 99.9 % of it, the row at 3 dp / 2 the rest). tests/test_basal_friction.cpp measures it on a sliding block.
 //
 // sigma_i, the normal stress at the face: the particle's pressure p_i (>= 0) carried hydrostatically to the face,
-// p_i + rho_i ((g - a_b,j) . (-n_j)) d_i (>= 0), as the mirror wall pressure does (fluid/wall_pressure.hpp): the first
+// p_i + rho_i ((g - a_b,j) . (-n_j)) d_i, as the mirror wall pressure does (fluid/wall_pressure.hpp): the first
 // row lies dp / 2 in front of the face, and its own pressure would fall short of the base's by rho g dp / 2 (10 % of
-// a block 5 dp thick). a_b,j is a body particle's rigid acceleration (zero for a fixed wall).
+// a block 5 dp thick). a_b,j is a body particle's rigid acceleration (zero for a fixed wall). Under water the grains
+// press on the wall with the effective stress, that less the pore pressure at the face point x_i - d_i n_j
+// (fluid/pore_pressure.hpp; zero for a dry material), and never with less than nothing.
 //
 // Only the shear rate is tangential: mu_w,i scales the whole wall pair, its normal part too. Scaling the tangential
 // part alone would make the wall's coefficient in the semi-implicit system a tensor mu_i n n^T + mu_w (I - n n^T),
@@ -46,6 +48,7 @@
 #include "fluid/kernel.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
+#include "fluid/pore_pressure.hpp"
 
 namespace slide {
 
@@ -75,7 +78,7 @@ struct WallShear {
 
 template <int D>
 WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double min_distance,
-                     const Vec<D>& gravity) {
+                     const Vec<D>& gravity, const PorePressureField<D>& pore = {}) {
   const double re2 = re * re;
   double sum_w = 0.0, rate = 0.0, stress = 0.0;
   const double p_i = std::max(P.pressure[i], 0.0);
@@ -90,7 +93,9 @@ WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& n
     const Vec<D> du = P.velocity[i] - P.velocity[j];
     const Vec<D> du_t = du - du.dot(n) * n;
     rate += w * du_t.norm() / std::max(d_i, min_distance);
-    stress += w * std::max(0.0, p_i - P.density[i] * (gravity - P.acceleration[j]).dot(n) * std::max(d_i, 0.0));
+    const double d_face = std::max(d_i, 0.0);
+    const double total = p_i - P.density[i] * (gravity - P.acceleration[j]).dot(n) * d_face;
+    stress += w * std::max(0.0, effective_pressure(total, pore.at(P.position[i] - d_face * n)));
     sum_w += w;
   }
   if (sum_w == 0.0) return {};

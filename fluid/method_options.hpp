@@ -4,6 +4,7 @@
 #include "fluid/gradient.hpp"
 #include "fluid/lattice.hpp"
 #include "fluid/name_table.hpp"
+#include "fluid/pore_pressure.hpp"
 #include "fluid/viscosity.hpp"
 #include "fluid/wall_pressure.hpp"
 
@@ -49,6 +50,8 @@ struct MethodOptions {
   double collision_distance_over_dp = 0.5;  // collision model (fluid/collision.hpp); 0 = off
   double collision_restitution = 0.2;
   double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while settling
+  // The frictional strengths act on the effective stress (fluid/pore_pressure.hpp); none: on the total pressure.
+  PorePressureModel pore_pressure = PorePressureModel::hydrostatic;
 
   // The wall condition of the viscous term and the strain rate: no-slip mirrors clip a particle's distance from the
   // face at dp / 2, the first lattice row's (fluid/viscosity.hpp, no_slip_mirror_factor).

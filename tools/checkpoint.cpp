@@ -13,7 +13,7 @@ namespace slide::tools {
 namespace {
 
 constexpr char kMagic[8] = {'S', 'L', 'I', 'D', 'E', 'C', 'K', 'P'};
-constexpr std::uint32_t kFormat = 2;  // 2: body particles' frames in a table of their own (stop 25)
+constexpr std::uint32_t kFormat = 3;  // 2: body particles' frames in a table of their own (stop 25); 3: slide_shapes.csv
 
 // FNV-1a, 64 bits: enough to tell a torn or altered file, not a guard against tampering.
 std::uint64_t fnv1a(const char* data, std::size_t n) {

@@ -8,6 +8,7 @@
 #include "coupling/free_surface_gauge.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/slide_front.hpp"
+#include "coupling/slide_shape_error.hpp"
 #include "coupling/surge_front.hpp"
 #include "coupling/velocity_profile.hpp"
 
@@ -90,9 +91,15 @@ RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& o
   if (!scene.slides.empty()) {
     slide_front_.emplace(out / "slide_front.csv", std::vector<std::string>{"time", "slide", "front_x", "front_y",
                                                                            "front_along", "thickness_max", "particles"});
-    if (!scene.slide_outline_times.empty())
-      slide_outline_.emplace(out / "slide_outline.csv", std::vector<std::string>{"time", "slide", "x", "y"});
   }
+  // Rigid bodies' upper surfaces too, so that one scene's two slide models compare alike.
+  if ((!scene.slides.empty() || sim_.bodies()) && !scene.slide_outline_times.empty())
+    slide_outline_.emplace(out / "slide_outline.csv", std::vector<std::string>{"time", "slide", "x", "y"});
+  if (scene.slide_shapes && (!scene.slides.empty() || sim_.bodies()))
+    slide_shapes_.emplace(out / "slide_shapes.csv",
+                          std::vector<std::string>{"time", "slide", "time_measured", "front_measured", "front_model",
+                                                   "travel_measured", "front_error_percent", "surface_rms",
+                                                   "compared_columns"});
   eps_ = 1e-12 * std::max(1.0, scene.end_time);
   if (scene.output.snapshot_interval > 0) next_snapshot_ = scene.output.snapshot_interval;
   next_sample_ = scene.output.gauge_interval;
@@ -174,22 +181,61 @@ void RunOutputs::sample_slides() {
   }
 }
 
+// Every slide's upper surface now, in columns of 2 dp (coupling/slide_front.hpp), and its front: the deformable slides'
+// from their particles, then the rigid bodies' from their outlines.
+std::vector<std::pair<std::string, RunOutputs::ModelSurface>> RunOutputs::model_surfaces() const {
+  const double dp = sim_.options.dp, width = 2.0 * dp;
+  std::vector<std::pair<std::string, ModelSurface>> out;
+  for (const auto& s : scene_.slides) {
+    const SlideFront f = measure_slide_front(sim_.particles, s.phase, Vec<2>(1.0, 0.0), dp, width);
+    out.push_back({s.name, {slide_upper_surface(sim_.particles, s.phase, dp, width), f.front[0] + 0.5 * dp}});
+  }
+  if (const auto& bodies = sim_.bodies())
+    for (std::size_t b = 0; b < bodies->size(); ++b) {
+      const std::vector<Vec<2>> outline = bodies->outline_now(int(b));
+      double front = -std::numeric_limits<double>::infinity();
+      for (const auto& v : outline) front = std::max(front, v[0]);
+      out.push_back({bodies->names[b], {polygon_upper_surface(outline, width), front}});
+    }
+  return out;
+}
+
 // The slides' upper surfaces at the scene's outline times (the first step at or after each).
 void RunOutputs::sample_slide_outlines() {
   const auto& times = scene_.slide_outline_times;
   while (slide_outline_ && next_outline_ < times.size() && sim_.time() >= times[next_outline_] - 1e-12) {
-    for (const auto& s : scene_.slides)
-      for (const auto& p : slide_upper_surface(sim_.particles, s.phase, sim_.options.dp, 2.0 * sim_.options.dp)) {
+    for (const auto& [name, m] : model_surfaces())
+      for (const auto& p : m.surface) {
         const double row[] = {p[0], p[1]};
-        slide_outline_->add_labelled_row(sim_.time(), s.name, row);
+        slide_outline_->add_labelled_row(sim_.time(), name, row);
       }
     ++next_outline_;
+  }
+}
+
+// The first slide's (or, without deformable slides, the first body's) shape against the measured one at each measured
+// time plus the offset (the first step at or after it; coupling/slide_shape_error.hpp).
+void RunOutputs::sample_slide_shapes() {
+  if (!slide_shapes_) return;
+  const auto& spec = *scene_.slide_shapes;
+  const double front_at_start = upper_envelope(spec.shapes.front().points).back()[0];
+  while (next_shape_ < spec.shapes.size() &&
+         sim_.time() >= spec.shapes[next_shape_].time_measured + spec.time_offset - 1e-12) {
+    const auto surfaces = model_surfaces();
+    const auto& [name, m] = surfaces.front();
+    const auto& shape = spec.shapes[next_shape_];
+    const SlideShapeError e = slide_shape_error(shape.points, front_at_start, m.surface, m.front);
+    const double row[] = {shape.time_measured, e.front_measured, e.front_model,        e.travel_measured,
+                          e.front_error_percent, e.surface_rms_m, double(e.compared)};
+    slide_shapes_->add_labelled_row(sim_.time(), name, row);
+    ++next_shape_;
   }
 }
 
 void RunOutputs::flush() {
   if (slide_front_) slide_front_->flush();
   if (slide_outline_) slide_outline_->flush();
+  if (slide_shapes_) slide_shapes_->flush();
   if (profiles_) profiles_->flush();
   if (bodies_) bodies_->flush();
   if (gauges_) gauges_->flush();
@@ -203,6 +249,7 @@ void RunOutputs::write_initial() {
   sample_bodies();
   sample_profiles();
   sample_slide_outlines();
+  sample_slide_shapes();
   flush();
 }
 
@@ -214,6 +261,7 @@ void RunOutputs::after_step(Simulation<2>& sim, double) {
   }
   sample_profiles();
   sample_slide_outlines();
+  sample_slide_shapes();
   if (bodies_ && t >= next_body_sample_ - eps_) {
     sample_bodies();
     next_body_sample_ = next_after(next_body_sample_, scene_.body_sample_interval, t);
@@ -238,7 +286,9 @@ void RunOutputs::write_final() {
 // Every table, in one fixed order (the checkpoint's), each whether or not this scene writes it.
 template <class F>
 void RunOutputs::for_each_csv(F&& f) {
-  for (auto* csv : {&gauges_, &front_, &velocity_profile_, &bodies_, &profiles_, &slide_front_, &slide_outline_}) f(*csv);
+  for (auto* csv : {&gauges_, &front_, &velocity_profile_, &bodies_, &profiles_, &slide_front_, &slide_outline_,
+                    &slide_shapes_})
+    f(*csv);
 }
 
 void RunOutputs::save_state(StateWriter& out) const {
@@ -246,6 +296,7 @@ void RunOutputs::save_state(StateWriter& out) const {
     out.put(t);
   out.put<std::uint64_t>(next_profile_);
   out.put<std::uint64_t>(next_outline_);
+  out.put<std::uint64_t>(next_shape_);
   const_cast<RunOutputs*>(this)->for_each_csv([&](const std::optional<CsvWriter>& csv) {
     out.put(csv.has_value());
     if (csv) {
@@ -269,6 +320,7 @@ void RunOutputs::restore_state(StateReader& in) {
     in.get(*t);
   next_profile_ = in.get<std::uint64_t>();
   next_outline_ = in.get<std::uint64_t>();
+  next_shape_ = in.get<std::uint64_t>();
   for_each_csv([&](std::optional<CsvWriter>& csv) {
     if (in.get<bool>() != csv.has_value()) throw std::runtime_error("the checkpoint's outputs are not the scene's");
     if (!csv) return;

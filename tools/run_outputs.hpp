@@ -59,14 +59,21 @@ class RunOutputs : public StepObserver<2> {
   void sample_profiles();
   void sample_slides();
   void sample_slide_outlines();
+  void sample_slide_shapes();
+  struct ModelSurface {
+    std::vector<Vec<2>> surface;  // column centres and tops, increasing x
+    double front = 0.0;           // m, the largest x the material reaches
+  };
+  std::vector<std::pair<std::string, ModelSurface>> model_surfaces() const;
   template <class F>
   void for_each_csv(F&& f);
 
   const cases::Scene& scene_;
   const Simulation<2>& sim_;
   std::optional<SnapshotWriter> snapshots_;
-  std::optional<CsvWriter> gauges_, front_, velocity_profile_, bodies_, profiles_, slide_front_, slide_outline_;
-  std::size_t next_profile_ = 0, next_outline_ = 0;
+  std::optional<CsvWriter> gauges_, front_, velocity_profile_, bodies_, profiles_, slide_front_, slide_outline_,
+      slide_shapes_;
+  std::size_t next_profile_ = 0, next_outline_ = 0, next_shape_ = 0;
   double eps_ = 0.0;
   double next_snapshot_ = std::numeric_limits<double>::infinity();
   double next_sample_ = 0.0;
