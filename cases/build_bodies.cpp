@@ -16,6 +16,8 @@
 #include "cases/csv_table.hpp"
 #include "cases/scene_build.hpp"
 #include "fluid/basal_friction.hpp"
+#include "fluid/pore_pressure.hpp"
+#include "fluid/water_surface.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
@@ -313,17 +315,25 @@ void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, 
 
 // The yield criterion at rest, an infinite-slope estimate: the slide rests on the wall face its outline lies along
 // (the steepest such face, theta its angle to the plane normal to gravity, whichever way gravity points); a layer of
-// its largest thickness normal to that face, of buoyant density (rho_s - rho_w below the still-water level:
-// weight_density), has the basal shear stress tau = rho' g h sin(theta); it holds tau_y
-// (Herschel-Bulkley), c + rho' g h cos(theta) tan(phi) (Mohr-Coulomb), mu_s rho' g h cos(theta) (mu(I)), nothing
-// (Newtonian); with a basal friction mu_b the wall holds mu_b rho' g h cos(theta) at its base.
+// its largest thickness h normal to that face, its top at the outline's vertex furthest from the face and its base at
+// that vertex's foot on the face. With the same functions the solver uses (fluid/water_surface.hpp,
+// fluid/pore_pressure.hpp, fluid/rheology/rheology.hpp strength_at_rest):
+//   total normal stress at the base   sigma = p_w(top) + rho_s g h cos(theta)   (the water above, then the layer),
+//   pore pressure at the base         p_w(base), hydrostatic below the water's surface (0 with pore_pressure none:
+//                                     the solver's frictional strengths then take the total stress),
+//   effective normal stress           sigma' = sigma - p_w(base),
+//   basal shear stress                tau = (rho_s h - rho_w h_w) g sin(theta), h_w the layer's submerged thickness
+//                                     (its buoyant weight's component along the face; the water's head adds none);
+// it holds strength_at_rest(sigma') (tau_y, c + sigma' tan(phi), mu_s sigma', nothing), and with a basal friction mu_b
+// the wall holds mu_b sigma' at its base.
 void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, SlideReport& rep) {
   const Particles<2>& P = b.sim->particles;
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
   rep.mass_particles = rep.particles * rep.density * b.dp * b.dp;
-  const double g = b.sim->options.gravity.norm();
-  const Vec<2> down = g > 0.0 ? Vec<2>(b.sim->options.gravity / g) : Vec<2>(0.0, -1.0);
+  const FluidOptions<2>& opt = b.sim->options;
+  const double g = opt.gravity.norm();
+  const Vec<2> down = g > 0.0 ? Vec<2>(opt.gravity / g) : Vec<2>(0.0, -1.0);
   Vec<2> tangent = Vec<2>::Zero(), normal = Vec<2>::Zero();
   double steepest = -1.0;
   for (const auto& f : b.faces) {
@@ -342,26 +352,41 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
     return;
   }
   rep.slope_angle_deg = std::asin(std::min(1.0, steepest)) * 180.0 / M_PI;
-  double h = 0.0;
-  const Vec<2> base = from_rigid(slide.outline[0]);
-  for (const auto& v : slide.outline) h = std::max(h, std::abs((from_rigid(v) - base).dot(normal)));
-  const double buoyant = weight_density(b, slide, rep.density);
   const double theta = rep.slope_angle_deg * M_PI / 180.0;
-  rep.basal_shear_stress = buoyant * g * h * std::sin(theta);
-  const double normal_stress = buoyant * g * h * std::cos(theta);
-  if (const auto* hb = std::get_if<HerschelBulkley>(&rheology)) rep.strength = hb->yield_stress_pa;
-  else if (const auto* mc = std::get_if<MohrCoulomb>(&rheology)) rep.strength = mc->yield_stress(normal_stress);
-  else if (const auto* mi = std::get_if<GranularMuI>(&rheology)) rep.strength = mi->mu_s * normal_stress;
-  rep.criterion = fmt::format("on a {:.3g} degree face, thickness {:.3g} m, buoyant density {:.4g} kg/m^3: basal shear "
-                              "stress {:.4g} Pa against {:.4g} Pa it holds: {}",
-                              rep.slope_angle_deg, h, buoyant, rep.basal_shear_stress, rep.strength,
-                              rep.basal_shear_stress <= rep.strength ? "stands at rest (rigid throughout)" : "flows");
+  // The layer: its top at the vertex furthest from the face, its base at that vertex's foot on the face.
+  double h = 0.0;
+  Vec<2> top = from_rigid(slide.outline[0]);
+  const Vec<2> base0 = from_rigid(slide.outline[0]);
+  for (const auto& v : slide.outline) {
+    const double d = std::abs((from_rigid(v) - base0).dot(normal));
+    if (d > h) h = d, top = from_rigid(v);
+  }
+  const Vec<2> base = top - h * normal;
+  // The water as the solver sees it: the first phase, when Newtonian, is the water (Simulation::pore_pressure_field).
+  const auto& water = b.phases.phases[0];
+  const bool has_water = slide.phase != 0 && std::holds_alternative<Newtonian>(water.rheology);
+  WaterSurface<2> surface;
+  if (has_water) surface.build(P, opt.gravity, b.dp, [&](std::size_t i) { return P.phase[i] == 0; });
+  const PorePressureField<2> head{water.density, g, has_water ? &surface : nullptr};
+  const bool effective = opt.pore_pressure == PorePressureModel::hydrostatic;
+  const double p_top = head.at(top), p_base = head.at(base);
+  const double total = p_top + rep.density * g * h * std::cos(theta);
+  const double normal_stress = effective_pressure(total, effective ? p_base : 0.0);
+  const double submerged = std::cos(theta) > 0.0 ? (p_base - p_top) / (water.density * g * std::cos(theta)) : 0.0;
+  rep.basal_shear_stress = (rep.density * h - water.density * submerged) * g * std::sin(theta);
+  rep.strength = strength_at_rest(rheology, normal_stress);
+  const std::string where = submerged >= h - 1e-9 ? "under water" : submerged > 0.0 ? "partly under water" : "dry";
+  rep.criterion = fmt::format(
+      "on a {:.3g} degree face, thickness {:.3g} m, {} (density {:.4g} kg/m^3; effective normal stress {:.4g} Pa at "
+      "its base, method.pore_pressure {}): basal shear stress {:.4g} Pa against {:.4g} Pa it holds: {}",
+      rep.slope_angle_deg, h, where, rep.density, normal_stress, to_string(opt.pore_pressure), rep.basal_shear_stress,
+      rep.strength, rep.basal_shear_stress <= rep.strength ? "stands at rest (rigid throughout)" : "flows");
   // A Coulomb basal friction (fluid/basal_friction.hpp) bounds what the wall holds at the base.
   const double mu_b = b.phases.phases[slide.phase].basal_friction;
   if (std::isfinite(mu_b))
-    rep.criterion += fmt::format("; at its base the wall holds mu_b x normal stress = {:.4g} Pa: {}",
-                                 mu_b * normal_stress,
-                                 rep.basal_shear_stress <= mu_b * normal_stress ? "holds" : "slides");
+    rep.criterion += fmt::format("; at its base the wall holds mu_b x effective normal stress = {:.4g} Pa: {}",
+                                 mu_b * std::max(normal_stress, 0.0),
+                                 rep.basal_shear_stress <= mu_b * std::max(normal_stress, 0.0) ? "holds" : "slides");
 }
 
 }  // namespace

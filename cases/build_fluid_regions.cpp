@@ -125,6 +125,8 @@ void fill_region(SceneBuild& b, const RegionShape& shape, std::size_t ph, const 
 }  // namespace
 
 void fill_fluid_regions(SceneBuild& b) {
+  if (b.r["fluid"]["regions"].size() == 0 && b.slides.empty())
+    throw SceneError("fluid.regions", "expected at least 1 item (a scene without water needs a deformable slide)");
   b.boundary_count = b.particles().size();
   for (const auto& slide : b.slides) fill_region(b, slide_shape(b, slide), slide.phase, slide.path, true);
   for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {

@@ -174,11 +174,12 @@ Schema method_schema() {
                                    "extrapolated continues the fluid's pressure into wall and dummy particles (Adami "
                                    "et al. 2012) (fluid/wall_pressure.hpp)",
                                    wall_pressure_names.names(), std::string(to_string(MethodOptions{}.wall_pressure)))},
-       {"pore_pressure", S::choice("pore water pressure p_w of a sediment under water: the Mohr-Coulomb and mu(I) "
-                                   "strengths and the basal friction act on the effective pressure p - p_w; "
-                                   "hydrostatic: p_w = rho_w g times the depth below the water's local surface (0 "
-                                   "above it; the drained limit); none: on the total pressure p, as for a dry "
-                                   "material (fluid/pore_pressure.hpp)",
+       {"pore_pressure", S::choice("pore water pressure p_w under water: the Mohr-Coulomb and mu(I) strengths and "
+                                   "the basal friction act on the effective pressure p - p_w, and the faces of a rigid "
+                                   "body that rest on a wall carry p_w (coupling/dry_face_pressure.hpp); hydrostatic: "
+                                   "p_w = rho_w g times the depth below the water's local surface, 0 above it (the "
+                                   "drained limit; the water is the first phase); none: on the total pressure p, and "
+                                   "no water under a resting body (fluid/pore_pressure.hpp)",
                                    pore_pressure_names.names(), std::string(to_string(MethodOptions{}.pore_pressure)))},
        {"artificial_viscosity", S::number("Monaghan artificial viscosity alpha between fluid particles; 0 = off "
                                           "(fluid/artificial_viscosity.hpp)",
@@ -339,7 +340,7 @@ Schema make_schema() {
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
        {"domain", domain_schema()},
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
-                                      {"regions", S::list("regions filled with fluid", region_schema(), 1)}})},
+                                      {"regions", S::list("regions filled with fluid (none: a dry scene, whose only fluid is its deformable slides)", region_schema(), 0)}})},
        {"walls", S::list("walls", wall_schema())},
        {"bodies", S::list("rigid bodies (slides, floating blocks)", body_schema())},
        {"rigid", rigid_schema()},

@@ -59,7 +59,7 @@ TEST(PorePressure, WaterSurfaceFollowsTiltedGravity) {
   WaterSurface<2> s;
   const Vec<2> gravity(g * std::sin(a), -g * std::cos(a));
   s.build(P, gravity, dp, [](std::size_t) { return true; });
-  EXPECT_NEAR(s.up().dot(Vec<2>(std::sin(a), std::cos(a))), 0.0, 1e-15);  // up is against g
+  EXPECT_NEAR(s.up().dot(gravity.normalized()), -1.0, 1e-15);  // up is against g
   // At the middle of the layer's top, the surface above is the highest water in the 3 columns across up around it:
   // the top row's centre plus dp / 2 at most about 1.5 columns up-slope, i.e. within 1.5 dp tan 30 + dp.
   const Vec<2> top(1.0, 0.5);

@@ -230,6 +230,23 @@ TEST(Rheology, SettlingViscosityIsTheModelWithoutItsYieldTerm) {
   EXPECT_EQ(settling_viscosity(g), 0.25);
 }
 
+// What slide check holds a slide with at rest (strength_at_rest) is the limit of eta(g, p) g as g -> 0 of each model,
+// on the effective pressure: exact values, and the models' own stress at a small shear rate.
+TEST(Rheology, StrengthAtRestIsTheStressOfTheModelAtVanishingShear) {
+  const double p = 800.0;
+  EXPECT_EQ(strength_at_rest(Newtonian{1e-3}, p), 0.0);
+  EXPECT_EQ(strength_at_rest(HerschelBulkley{40.0, 0.5, 1.0, BiViscosity{1e12}, 1e3}, p), 40.0);
+  const MohrCoulomb mc{5.0, 30.0, 0.5, 1.0, BiViscosity{1e12}, 1e3};
+  EXPECT_NEAR(strength_at_rest(mc, p), 5.0 + p * std::tan(M_PI / 6.0), 1e-12);
+  EXPECT_EQ(strength_at_rest(mc, -100.0), 5.0);  // tension: cohesion only
+  const GranularMuI m = sand();
+  EXPECT_DOUBLE_EQ(strength_at_rest(m, p), 0.38 * p);
+  EXPECT_EQ(strength_at_rest(m, -100.0), 0.0);
+  const double g = 1e-9;
+  for (const Rheology& r : {Rheology(mc), Rheology(m)})
+    EXPECT_NEAR(effective_viscosity(r, g, p) * g, strength_at_rest(r, p), 1e-5 * strength_at_rest(r, p));
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Strain rate
 

@@ -2,7 +2,9 @@
 """Plots a slide run: wave gauges (gauges.png); for a dam break the surge front against Martin & Moyce (1952)
 (surge_front.png); for runs with bodies their position, velocity and fluid force against time (bodies.png);
 free-surface profiles (profiles.png); for deformable slides the front and largest thickness against time and the upper
-surface at the outline times (slide.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid,
+surface at the outline times (slide.png); for a scene with measured slide shapes (diagnostics.slide_shapes) the model's
+upper surface against them at each measured time, with the front's error and the surfaces' rms distance
+(slide_shapes.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid,
 e.g. resolutions, or a free and a prescribed run).
 Uses Debian's python3-matplotlib and python3-numpy through /usr/bin/python3."""
 import csv
@@ -138,6 +140,47 @@ def plot_slides(runs, target):
     print("wrote", target)
 
 
+def measured_shapes(run):
+    """The measured shapes a run compared itself with: {measured time: [(x, y)]}, and the time offset."""
+    info = json.load(open(os.path.join(run, "run.json")))
+    spec = info["scene"]["diagnostics"]["slide_shapes"]
+    path = os.path.join(os.path.dirname(info["scene_file"]), spec["file"])
+    shapes = {}
+    for r in read_csv(path):
+        shapes.setdefault(float(r["t_exp_s"]), []).append((float(r["x_m"]), float(r["y_m"])))
+    return shapes, float(spec["time_offset"])
+
+
+def plot_shapes(runs, target):
+    """One panel per measured time after the start: the measured points and each run's upper surface at the first
+    output time at or after it (slide_outline.csv), titled with slide_shapes.csv's errors."""
+    shapes, offset = measured_shapes(runs[0])
+    times = sorted(shapes)[1:]
+    fig, axes = plt.subplots(len(times), 1, figsize=(9, 2.6 * len(times)), squeeze=False)
+    for ax, t_exp in zip(axes[:, 0], times):
+        ax.plot(*zip(*shapes[sorted(shapes)[0]]), "s", color="0.7", ms=3, mfc="none", label="measured at the start")
+        ax.plot(*zip(*shapes[t_exp]), "ko", ms=3, mfc="none", label=f"measured, t = {t_exp:.2f} s (experiment)")
+        titles = []
+        for run in runs:
+            outline = [r for r in read_csv(os.path.join(run, "slide_outline.csv"))]
+            at = [float(r["time"]) for r in outline if float(r["time"]) >= t_exp + offset - 1e-9]
+            if at:
+                mine = [r for r in outline if float(r["time"]) == min(at)]
+                ax.plot([float(r["x"]) for r in mine], [float(r["y"]) for r in mine], ".-", ms=3,
+                        label=f"model t = {min(at):.3f} s: {label_of(run)}")
+            for r in read_csv(os.path.join(run, "slide_shapes.csv")):
+                if abs(float(r["time_measured"]) - t_exp) < 1e-9:
+                    titles.append(f"front {float(r['front_error_percent']):+.0f} % of travel, "
+                                  f"surface rms {100 * float(r['surface_rms']):.1f} cm")
+        ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal",
+               title=f"t = {t_exp:.2f} s (model {t_exp + offset:.2f} s): " + "; ".join(titles))
+        ax.title.set_fontsize(8)
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(target, dpi=110)
+    print("wrote", target)
+
+
 def main():
     runs = sys.argv[1:]
     if not runs:
@@ -153,6 +196,8 @@ def main():
         plot_profiles(runs, os.path.join(out, "profiles.png"))
     if all(os.path.exists(os.path.join(r, "slide_front.csv")) for r in runs):
         plot_slides(runs, os.path.join(out, "slide.png"))
+    if all(os.path.exists(os.path.join(r, "slide_shapes.csv")) for r in runs):
+        plot_shapes(runs, os.path.join(out, "slide_shapes.png"))
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 #pragma once
 // A phase's rheology: one of the models, each in its own file. Every model gives an effective (dynamic) viscosity
 // eta(g, p) in Pa s from the local shear rate g = sqrt(2 D:D) (1/s, fluid/strain_rate.hpp) and pressure p (Pa).
+#include <algorithm>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -43,6 +44,17 @@ inline bool has_yield_stress(const Rheology& r) {
 // rheology stage then gives it the confining pressure (fluid/confining_pressure.hpp).
 inline bool depends_on_pressure(const Rheology& r) {
   return std::holds_alternative<MohrCoulomb>(r) || std::holds_alternative<GranularMuI>(r);
+}
+
+// The shear stress the material holds at rest under the (effective) pressure p, Pa: the limit of eta(g, p) g as g -> 0
+// of the unregularised model. Herschel-Bulkley: tau_y; Mohr-Coulomb: c + max(p, 0) tan(phi); mu(I): mu_s max(p, 0);
+// Newtonian: 0. slide check's estimate at rest (cases/build_bodies.cpp) calls it with the effective stress the solver
+// gives the rheology (fluid/pore_pressure.hpp).
+inline double strength_at_rest(const Rheology& r, double pressure_pa) {
+  if (const auto* hb = std::get_if<HerschelBulkley>(&r)) return hb->yield_stress_pa;
+  if (const auto* mc = std::get_if<MohrCoulomb>(&r)) return mc->yield_stress(pressure_pa);
+  if (const auto* mi = std::get_if<GranularMuI>(&r)) return mi->mu_s * std::max(pressure_pa, 0.0);
+  return 0.0;
 }
 
 // The model's name as scenes and outputs spell it.
