@@ -149,7 +149,7 @@ void RigidBodies::add_dry_face_pressure(const Particles<2>& P, const NeighborGri
   for (std::size_t b = 0; b < size(); ++b) {
     const auto st = world.state(int(b));
     const ForceAndTorque f =
-        dry_face_pressure(outline_now(int(b)), Vec<2>(st.position[0], st.position[1]), P, grid, pore, dp);
+        dry_face_pressure(outline_now(int(b)), int(b), Vec<2>(st.position[0], st.position[1]), P, grid, pore, dp);
     pending_[b].pressure += f.force;
     pending_[b].pressure_torque += f.torque;
   }

@@ -77,7 +77,7 @@ class RigidBodies {
                            double kappa, double volume);
   void add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance, double restitution,
                             double volume, double dt);
-  // The water's pressure on the faces no fluid particle touches under water, the contact with a wall: beside the pair
+  // The water's pressure on the faces that rest on a wall under water, where no fluid particle reaches: beside the pair
   // terms above, called with them (coupling/dry_face_pressure.hpp). `grid` bins P's positions.
   void add_dry_face_pressure(const Particles<2>& P, const NeighborGrid<2>& grid, const PorePressureField<2>& pore,
                              double dp);
