@@ -2,9 +2,10 @@
 // face, so the fluid's force on it is its buoyancy and the wall carries only its buoyant weight. Issue 29 asks the
 // fluid force within 1 % of rho_w g A and Bullet's Coulomb normal force within 2 % of the buoyant weight's normal
 // component. Measured at dp 0.01 (stop 28): the fluid force -1.36 % (floor) and -1.46 % (20 degree slope), the normal
-// force +1.36 % and +0.82 %: the 1 % is NOT met. The wetted faces' pair terms act as if the surface stood 1.4 mm
-// (0.14 dp) higher than the dry faces' hydrostatic head takes it (the top row's centre plus dp / 2); not yet
-// explained. These tests hold both at 2 %; before issue 29 the water pressed the box onto the floor with 585 N/m.
+// force +1.36 % and +0.82 %: the 1 % is NOT met, and not through the contact face: the same box held 10 dp above the
+// floor, wetted all round, gets -1.59 % (a held box 2 dp above the floor, a gap of two rows of water: -8.3 %): at this
+// spacing the wetted faces' pair terms give a held body 1.6 % less than its buoyancy. These tests hold both at 2 %;
+// before issue 29 the water pressed the box onto the floor (-386 N/m).
 #include <gtest/gtest.h>
 
 #include <cmath>
