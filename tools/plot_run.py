@@ -156,7 +156,7 @@ def plot_shapes(runs, target):
     output time at or after it (slide_outline.csv), titled with slide_shapes.csv's errors."""
     shapes, offset = measured_shapes(runs[0])
     times = sorted(shapes)[1:]
-    fig, axes = plt.subplots(len(times), 1, figsize=(9, 2.6 * len(times)), squeeze=False)
+    fig, axes = plt.subplots(len(times), 1, figsize=(12, 2.8 * len(times)), squeeze=False)
     for ax, t_exp in zip(axes[:, 0], times):
         ax.plot(*zip(*shapes[sorted(shapes)[0]]), "s", color="0.7", ms=3, mfc="none", label="measured at the start")
         ax.plot(*zip(*shapes[t_exp]), "ko", ms=3, mfc="none", label=f"measured, t = {t_exp:.2f} s (experiment)")
@@ -175,7 +175,7 @@ def plot_shapes(runs, target):
         ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal",
                title=f"t = {t_exp:.2f} s (model {t_exp + offset:.2f} s): " + "; ".join(titles))
         ax.title.set_fontsize(8)
-        ax.legend(fontsize=6)
+        ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     fig.tight_layout()
     fig.savefig(target, dpi=110)
     print("wrote", target)
