@@ -8,10 +8,10 @@
 // before issue 29 the water pressed the box onto the floor (-386 N/m).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <algorithm>
 
 #include <fmt/format.h>
 
