@@ -50,7 +50,10 @@ struct MethodOptions {
   double collision_distance_over_dp = 0.5;  // collision model (fluid/collision.hpp); 0 = off
   double collision_restitution = 0.2;
   double velocity_damping_rate = 0.0; // 1/s; fluid velocities decay as exp(-rate t); used only while settling
-  // The frictional strengths act on the effective stress (fluid/pore_pressure.hpp); none: on the total pressure.
+  // The frictional strengths act on the effective stress (fluid/pore_pressure.hpp); none: on the total pressure. Why
+  // hydrostatic (issue 29): on the total pressure the Grilli et al. (2017) bead slide moved 0.9 mm in 0.8 s and the
+  // same triangle as a rigid body 0.08 mm; with it both slide (tests/test_grilli2017.cpp), and slide check's
+  // infinite-slope verdict matches the solver dry and submerged (tests/test_slide_check_agreement.cpp).
   PorePressureModel pore_pressure = PorePressureModel::hydrostatic;
 
   // The wall condition of the viscous term and the strain rate: no-slip mirrors clip a particle's distance from the
