@@ -30,6 +30,14 @@ struct LayerRun {
   double dp = 0.0;
 };
 
+// What slide check says of the scene's first slide, before it runs.
+LayerRun checked(const cases::Scene& scene, double dp) {
+  LayerRun r;
+  r.dp = dp;
+  r.criterion = scene.slides[0].criterion;
+  return r;
+}
+
 // The dry layer: 0.1 m of sand (1950 kg/m^3, c = 0, phi = 30 deg, K = 1 Pa s) on the floor; dp = 0.02 m on the default
 // lattice, the period 10 of its columns. (Not under water: water on an infinite slope is not at rest, it flows down it.)
 LayerRun layer(double slope_deg) {
@@ -58,9 +66,7 @@ output: {{snapshots: false}}
   auto scene = build_scene_text(fmt::format("layer_{:.0f}", slope_deg), yaml);
   auto& sim = *scene->simulation;
   const std::uint8_t phase = scene->slides[0].phase;
-  LayerRun r;
-  r.dp = dp;
-  r.criterion = scene->slides[0].criterion;
+  LayerRun r = checked(*scene, dp);
   // Along the slope with the periodic wrap undone: particles followed by id, step by step.
   std::unordered_map<std::uint32_t, Vec<2>> start = slide_positions(sim.particles, phase), last = start,
                                              unwrapped = start;
@@ -130,9 +136,7 @@ output: {{snapshots: false}}
   auto scene = build_scene_text(fmt::format("triangle_{}", pore_pressure), yaml);
   auto& sim = *scene->simulation;
   const std::uint8_t phase = scene->slides[0].phase;
-  LayerRun r;
-  r.dp = dp;
-  r.criterion = scene->slides[0].criterion;
+  LayerRun r = checked(*scene, dp);
   const Vec<2> c0 = centre_of_mass(sim.particles, phase), down_slope(std::cos(35.0 * M_PI / 180.0),
                                                                       -std::sin(35.0 * M_PI / 180.0));
   EXPECT_TRUE(run_scene(*scene, [](const Simulation<2>&) {}));
