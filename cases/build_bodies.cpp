@@ -334,24 +334,15 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
   const FluidOptions<2>& opt = b.sim->options;
   const double g = opt.gravity.norm();
   const Vec<2> down = g > 0.0 ? Vec<2>(opt.gravity / g) : Vec<2>(0.0, -1.0);
-  Vec<2> tangent = Vec<2>::Zero(), normal = Vec<2>::Zero();
-  double steepest = -1.0;
-  for (const auto& f : b.faces) {
-    int touching = 0;
-    // |distance|: a vertex far behind a face of another wall polyline (a separate cup) does not touch it.
-    for (const auto& v : slide.outline) touching += std::abs(signed_face_distance({f}, from_rigid(v))) < 0.5 * b.dp;
-    if (touching < 2) continue;
-    const Vec<2> t = (f.b - f.a).normalized();
-    const double steep = std::abs(t.dot(down));  // sin theta
-    if (steep > steepest) steepest = steep, tangent = t, normal = f.inward;
-  }
+  const std::optional<FaceSegment> face = resting_face(b.faces, slide.outline, b.dp, down);
   const Rheology rheology = b.phases.phases[slide.phase].rheology;
   warn_if_rigid_at_rest(b, slide, rheology, rep);
-  if (steepest < 0.0 || g == 0.0) {
+  if (!face || g == 0.0) {
     rep.criterion = "rests on no wall face: no yield criterion at rest";
     return;
   }
-  rep.slope_angle_deg = std::asin(std::min(1.0, steepest)) * 180.0 / M_PI;
+  const Vec<2> tangent = (face->b - face->a).normalized(), normal = face->inward;
+  rep.slope_angle_deg = std::asin(std::min(1.0, std::abs(tangent.dot(down)))) * 180.0 / M_PI;
   const double theta = rep.slope_angle_deg * M_PI / 180.0;
   // The layer: its top at the vertex furthest from the face, its base at that vertex's foot on the face.
   double h = 0.0;

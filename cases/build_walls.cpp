@@ -1,6 +1,6 @@
 // Step: the walls (walls[]): their faces, and their wall and dummy particles (square lattice: layers behind the
-// face polyline; hexagonal: the lattice points behind the face, to the depth re), each owned by its wall for
-// messages. On the hexagonal lattice with bodies, the lattice is first moved to meet the first body's bottom.
+// face polyline; hexagonal: the lattice points behind faces along its rows or columns, rows laid along any other
+// face, to the depth re: fluid/walls.hpp), each owned by its wall for messages. On the hexagonal lattice with bodies, the lattice is first moved to meet the first body's bottom.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -102,7 +102,10 @@ void build_walls(SceneBuild& b) {
       if (gates)
         for (std::size_t i = first; i < b.particles().size(); ++i) b.gate_ids.push_back(b.particles().id[i]);
       else
-        for (const auto& f : face_segments(face, left)) b.faces.push_back(f);
+        for (auto f : face_segments(face, left)) {
+          f.clearance = water_clearance(b.sim->options.lattice, b.dp, f.a, f.b);
+          b.faces.push_back(f);
+        }
     }
 }
 

@@ -51,6 +51,30 @@ double signed_face_distance(const std::vector<FaceSegment>& faces, const Vec<2>&
   return signed_best;
 }
 
+bool clear_of_faces(const std::vector<FaceSegment>& faces, const Vec<2>& p, double eps) {
+  if (signed_face_distance(faces, p) < eps) return false;
+  for (const auto& f : faces) {
+    const Vec<2> ab = f.b - f.a;
+    const double t = std::clamp((p - f.a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    if ((p - (f.a + t * ab)).norm() < f.clearance - eps) return false;
+  }
+  return true;
+}
+
+std::optional<FaceSegment> resting_face(const std::vector<FaceSegment>& faces, const std::vector<rigid::Vec2>& outline,
+                                        double dp, const Vec<2>& down) {
+  std::optional<FaceSegment> found;
+  double steepest = -1.0;
+  for (const auto& f : faces) {
+    int touching = 0;
+    for (const auto& v : outline) touching += std::abs(signed_face_distance({f}, from_rigid(v))) < 0.5 * dp;
+    if (touching < 2) continue;
+    const double steep = std::abs((f.b - f.a).normalized().dot(down));  // sin theta
+    if (steep > steepest) steepest = steep, found = f;
+  }
+  return found;
+}
+
 void face_bounds(const std::vector<FaceSegment>& faces, Vec<2>& lo, Vec<2>& hi) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   lo = Vec<2>::Constant(inf);

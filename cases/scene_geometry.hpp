@@ -4,6 +4,7 @@
 // (area, centroid, contains, distance to the outline) are rigid/polygon.hpp's.
 #include <yaml-cpp/yaml.h>
 
+#include <optional>
 #include <vector>
 
 #include "fluid/vec.hpp"
@@ -25,6 +26,7 @@ bool inside_polygon(const std::vector<Vec<2>>& poly, const Vec<2>& p);
 // One straight piece of a wall face, with the unit normal pointing into the fluid.
 struct FaceSegment {
   Vec<2> a, b, inward;
+  double clearance = 0.0;  // m: the water starts this far in front of it (water_clearance, fluid/walls.hpp)
 };
 
 // The segments of a face polyline, the fluid on its left (walking from the first vertex) or on its right.
@@ -32,6 +34,16 @@ std::vector<FaceSegment> face_segments(const std::vector<Vec<2>>& face, bool flu
 
 // Signed distance of p from the nearest face segment: positive on the fluid side.
 double signed_face_distance(const std::vector<FaceSegment>& faces, const Vec<2>& p);
+
+// Whether water may start at p: in front of the faces (by more than eps) and no nearer to any of them than its
+// clearance (less eps).
+bool clear_of_faces(const std::vector<FaceSegment>& faces, const Vec<2>& p, double eps);
+
+// The wall face a polygon rests on: of the faces that two or more of its vertices lie within dp / 2 of (|distance|:
+// a vertex far behind a face of another wall polyline, a separate cup, does not touch it), the steepest along the
+// unit vector `down`; none when it touches no face.
+std::optional<FaceSegment> resting_face(const std::vector<FaceSegment>& faces, const std::vector<rigid::Vec2>& outline,
+                                        double dp, const Vec<2>& down);
 
 // Bounding box of the face segments (empty list: lo = +inf, hi = -inf).
 void face_bounds(const std::vector<FaceSegment>& faces, Vec<2>& lo, Vec<2>& hi);

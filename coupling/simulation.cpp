@@ -247,7 +247,7 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
     parallel_for(particles.real_count(), [&](std::size_t i) { position_at_step_start_[i] = particles.position[i]; });
   }
   update_water_surface();
-  update_viscosity();
+  update_viscosity(dt);
   predict_with_viscosity_and_gravity(dt);
   compute_pressure();  // at the predicted positions
   correct_with_pressure_gradient(dt);
@@ -358,7 +358,7 @@ void Simulation<D>::record_largest_compression(double n_max) {
 // Basal friction: then, for a phase with a Coulomb basal friction, the fraction of that viscosity its wall pairs use
 // (fluid/basal_friction.hpp), from the same start-of-step velocities and pressures (lagged alike).
 template <int D>
-void Simulation<D>::update_viscosity() {
+void Simulation<D>::update_viscosity(double dt) {
   if (!rheology_ && !basal_friction_) return;
   const PorePressureField<D> pore = pore_pressure_field();
   auto& P = particles;
@@ -387,7 +387,7 @@ void Simulation<D>::update_viscosity() {
       if (P.kind[i] != Kind::fluid) return;
       const double mu_b = phases[P.phase[i]].basal_friction;
       if (!std::isfinite(mu_b)) return;
-      const WallShear s = wall_shear<D>(i, P, list_, r_e, wall.min_distance, options.gravity, pore);
+      const WallShear s = wall_shear<D>(i, P, list_, r_e, wall.min_distance, options.gravity, pore, dt);
       P.wall_fraction[i] = coulomb_wall_fraction(P.viscosity[i], mu_b, s.normal_stress, s.rate);
     });
     copy_to_ghosts(P, P.wall_fraction);

@@ -146,7 +146,7 @@ class Simulation {
  private:
   // The stages of one step (DESIGN.md, "The step loop").
   void update_neighbors(bool force);
-  void update_viscosity();
+  void update_viscosity(double dt);
   void update_water_surface();
   void record(const ViscousSolveReport& r);
   void predict_with_viscosity_and_gravity(double dt);

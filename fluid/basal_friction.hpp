@@ -76,9 +76,18 @@ struct WallShear {
   double normal_stress = 0.0;
 };
 
+//
+// The slip velocity is the trial one of a return mapping (as Coulomb friction is integrated in contact mechanics,
+// e.g. Wriggers, Computational Contact Mechanics, 2006, ch. 10): u_i - u_b,j + dt (g - a_b,j), the slip the step
+// would reach if the wall carried no shear (`dt`, the step; 0 gives the slip at its start). Why: with the slip at the
+// step's start, a material at rest sees g_w = 0, the no-slip wall (s = 1), and a stiff slide resting on a slope
+// steeper than its friction angle never started (a Herschel-Bulkley block, phi_b 15 degrees on a 20 degree slope, did
+// not move in 0.3 s; issue 29, item 3). With the trial slip the wall carries at most mu_b sigma from the first step.
+// Where the friction holds (mu_b sigma above the driving stress), the wall's stress balances the drive at a slip
+// speed of order g dt, which moves the material by a small fraction of a spacing in a second.
 template <int D>
 WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double min_distance,
-                     const Vec<D>& gravity, const PorePressureField<D>& pore = {}) {
+                     const Vec<D>& gravity, const PorePressureField<D>& pore = {}, double dt = 0.0) {
   const double re2 = re * re;
   double sum_w = 0.0, rate = 0.0, stress = 0.0;
   const double p_i = std::max(P.pressure[i], 0.0);
@@ -90,7 +99,7 @@ WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& n
     const double w = kernel_weight(std::sqrt(r2), re);
     const Vec<D>& n = P.wall_normal[j];
     const double d_i = n.dot(P.position[i] - P.position[j]) - P.wall_depth[j];
-    const Vec<D> du = P.velocity[i] - P.velocity[j];
+    const Vec<D> du = P.velocity[i] - P.velocity[j] + dt * (gravity - P.acceleration[j]);
     const Vec<D> du_t = du - du.dot(n) * n;
     rate += w * du_t.norm() / std::max(d_i, min_distance);
     const double d_face = std::max(d_i, 0.0);

@@ -6,7 +6,9 @@
 // repulsive pair force gives its shear modes negative stiffness), so still water started on it rearranges by itself.
 // The hexagonal lattice is the stable packing of repulsive particles; still water started on it stays put in the
 // bulk (issue 3's closing note has the measurements).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -54,6 +56,33 @@ void for_each_lattice_point(LatticeKind k, double dp, const Vec<2>& lo, const Ve
   const long j0 = static_cast<long>(std::floor(l[1] / h)) - 1, j1 = static_cast<long>(std::ceil(u[1] / h)) + 1;
   for (long j = j0; j <= j1; ++j)
     for (long i = i0; i <= i1; ++i) f(lattice_point(k, dp, i, j, offset));
+}
+
+// The lattice laid along a face (fluid/walls.hpp; a slide resting on it, cases/build_fluid_regions.cpp): rows
+// parallel to the face at (k + 1/2) h on the side `out` points to (k < 0: behind it), points a apart along each row
+// from `origin`, odd rows shifted by a / 2 on the hexagonal lattice. Rows k = -1 and k = 0 are a row spacing apart
+// across the face, so a wall's rows (k < 0) and a slide's (k >= 0) form one unbroken lattice.
+inline Vec<2> face_lattice_point(LatticeKind kind, double dp, const Vec<2>& origin, const Vec<2>& along,
+                                 const Vec<2>& out, long i, long k) {
+  const double a = nearest_spacing(kind, dp), h = row_spacing(kind, dp);
+  const double shift = kind == LatticeKind::hexagonal ? 0.5 * static_cast<double>(((k % 2) + 2) % 2) : 0.0;
+  return origin + ((i + shift) * a) * along + ((k + 0.5) * h) * out;
+}
+
+// Calls f(point) for every point of that lattice in the box [lo, hi] (and a few beyond it; callers test membership).
+template <class F>
+void for_each_face_lattice_point(LatticeKind kind, double dp, const Vec<2>& origin, const Vec<2>& along,
+                                 const Vec<2>& out, const Vec<2>& lo, const Vec<2>& hi, F&& f) {
+  const double a = nearest_spacing(kind, dp), h = row_spacing(kind, dp);
+  double s_lo = std::numeric_limits<double>::infinity(), s_hi = -s_lo, n_lo = s_lo, n_hi = -s_lo;
+  for (const Vec<2>& c : {lo, hi, Vec<2>(lo[0], hi[1]), Vec<2>(hi[0], lo[1])}) {
+    s_lo = std::min(s_lo, (c - origin).dot(along)), s_hi = std::max(s_hi, (c - origin).dot(along));
+    n_lo = std::min(n_lo, (c - origin).dot(out)), n_hi = std::max(n_hi, (c - origin).dot(out));
+  }
+  const long k0 = static_cast<long>(std::floor(n_lo / h)) - 1, k1 = static_cast<long>(std::ceil(n_hi / h)) + 1;
+  const long i0 = static_cast<long>(std::floor(s_lo / a)) - 1, i1 = static_cast<long>(std::ceil(s_hi / a)) + 1;
+  for (long k = k0; k <= k1; ++k)
+    for (long i = i0; i <= i1; ++i) f(face_lattice_point(kind, dp, origin, along, out, i, k));
 }
 
 // The vertical offset, in (-h/2, h/2], that puts a row of the lattice at height y.

@@ -92,11 +92,36 @@ inline std::vector<BoundaryPoint> polyline_boundary(const std::vector<Vec<2>>& f
   return out;
 }
 
-// Boundary particles on the fluid's own lattice (used with the hexagonal lattice, whose rows cannot follow a face):
-// every lattice point that lies on or behind the face, no deeper than re, and whose nearest point on the face is not
-// an open end of the polyline (a closed polyline, such as a body's outline, has none). Fluid and boundary then form one unbroken lattice, so the fluid next to a wall has the
-// number density of the bulk. Normal and depth are those of the nearest face point (the bisecting direction behind a
-// corner); layer 0 (the wall layer) is everything less than one row spacing deep.
+// Whether a face segment runs along the hexagonal lattice's rows (horizontal) or its columns (vertical), where the
+// lattice's own points make its wall (lattice_boundary). Any other direction gets rows of its own.
+inline bool along_lattice_axes(const Vec<2>& a, const Vec<2>& b) {
+  const Vec<2> d = b - a;
+  return std::abs(d[0]) <= 1e-9 * d.norm() || std::abs(d[1]) <= 1e-9 * d.norm();
+}
+
+// How far in front of a wall face the water's lattice points start: half a spacing on the square lattice (its wall
+// layers lie at (k + 1/2) dp behind the face); on the hexagonal lattice at the face itself where the wall is the
+// lattice's own points (they split one lattice), and half a row spacing where the wall has rows laid along the face
+// (lattice_boundary), so that no water lies closer to the first row than a row spacing.
+inline double water_clearance(LatticeKind kind, double dp, const Vec<2>& a, const Vec<2>& b) {
+  if (kind == LatticeKind::square) return 0.5 * dp;
+  return along_lattice_axes(a, b) ? 0.0 : 0.5 * row_spacing(kind, dp);
+}
+
+// Boundary particles for the hexagonal lattice, whose rows cannot follow a face. Each lattice point behind the face,
+// no deeper than re, belongs to its nearest face segment (the first of equally near ones); a point whose nearest face
+// point is an open end of the polyline is left out (a closed polyline, such as a body's outline, has none).
+//  * A segment along the lattice's rows or columns (along_lattice_axes) takes the fluid's own lattice points: fluid
+//    and boundary form one unbroken lattice, so the fluid next to such a wall has the number density of the bulk.
+//  * Any other segment takes a hexagonal lattice of the same spacings laid along it (fluid/lattice.hpp,
+//    face_lattice_point): rows parallel to the face at (k + 1/2) h behind it (h the row spacing), points a apart
+//    along each row, odd rows shifted by a / 2, anchored at the segment's first vertex. Why: the fluid's lattice cut along a slope is a staircase of steps one row high, and
+//    a slide on it was held as if by friction (a stiff sediment block on a frictionless 20 / 35 / 45 degree slope
+//    accelerated 46 / 16 / 23 % below g sin(beta), and hopped 0.8 dp off the steps; issue 29, item 3). A face made
+//    of rows along it is a plane: the water's first row meets one flat row, whatever the angle.
+// Normal and depth are those of the nearest face point (the bisecting direction behind a corner); layer 0 (the wall
+// layer) is everything less than one row spacing deep. Where two segments' points meet behind a vertex they may lie
+// closer than a spacing; the caller leaves out a point within dp / 2 of one already placed.
 inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& face, bool fluid_on_left, double dp,
                                                    double re, LatticeKind kind,
                                                    const Vec<2>& offset = Vec<2>::Zero()) {
@@ -104,18 +129,16 @@ inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& fa
   if (nv < 2) throw std::invalid_argument("a wall needs at least two vertices");
   for (std::size_t s = 0; s + 1 < nv; ++s)
     if ((face[s + 1] - face[s]).norm() <= 0.0) throw std::invalid_argument("a wall has two equal consecutive vertices");
-  Vec<2> lo = face[0], hi = face[0];
-  for (const auto& q : face) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-  lo -= Vec<2>::Constant(re);
-  hi += Vec<2>::Constant(re);
-  const double eps = 1e-9 * dp, row = row_spacing(kind, dp);
+  const double eps = 1e-9 * dp, row = row_spacing(kind, dp), a = nearest_spacing(kind, dp);
   // A closed face (last vertex equal to the first, a body's outline) has no open ends.
   const bool closed = nv >= 4 && (face.front() - face.back()).norm() <= 1e-12 * (1.0 + face.front().norm());
   std::vector<BoundaryPoint> out;
-  for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<2>& p) {
+  // Keeps p if owns(its nearest segment) (the first of equally near ones) and it lies behind the face within re.
+  auto keep = [&](auto&& owns, const Vec<2>& p) {
     double best = std::numeric_limits<double>::infinity();
     Vec<2> nearest = Vec<2>::Zero(), inward = Vec<2>::Zero();
     bool open_end = false;
+    std::size_t nearest_segment = 0;
     for (std::size_t s = 0; s + 1 < nv; ++s) {
       const Vec<2> d = face[s + 1] - face[s];
       const Vec<2> left = Vec<2>(-d[1], d[0]).normalized();
@@ -125,16 +148,33 @@ inline std::vector<BoundaryPoint> lattice_boundary(const std::vector<Vec<2>>& fa
       if (dist < best - eps) {
         best = dist;
         nearest = c;
+        nearest_segment = s;
         inward = fluid_on_left ? left : Vec<2>(-left);
         open_end = !closed && ((t == 0.0 && s == 0) || (t == 1.0 && s + 2 == nv));
       }
     }
-    if (open_end || best > re + eps || (p - nearest).dot(inward) > eps) return;
+    if (!owns(nearest_segment) || open_end || best > re + eps || (p - nearest).dot(inward) > eps) return;
     // Behind a corner the nearest face point is the vertex: the normal points from the particle to it.
     const bool corner = best > eps && (nearest - p).normalized().dot(inward) < 1.0 - 1e-9;
     const Vec<2> normal = corner ? Vec<2>((nearest - p).normalized()) : inward;
     out.push_back({p, normal, best, best < row - eps ? 0 : 1});
-  }, offset);
+  };
+  // The lattice's own points first, in the lattice's order (the order of the walls before rows along faces).
+  auto on_lattice = [&](std::size_t s) { return kind == LatticeKind::square || along_lattice_axes(face[s], face[s + 1]); };
+  Vec<2> lo = face[0], hi = face[0];
+  for (const auto& q : face) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  for_each_lattice_point(kind, dp, lo - Vec<2>::Constant(re), hi + Vec<2>::Constant(re),
+                         [&](const Vec<2>& p) { keep(on_lattice, p); }, offset);
+  for (std::size_t s = 0; s + 1 < nv; ++s) {
+    if (on_lattice(s)) continue;
+    const Vec<2> along = (face[s + 1] - face[s]).normalized(), left(-along[1], along[0]);
+    const Vec<2> out_of_wall = fluid_on_left ? left : Vec<2>(-left);
+    const long rows = static_cast<long>(std::floor(re / row - 0.5 + 1e-9)) + 1;
+    const long last = static_cast<long>(std::ceil(((face[s + 1] - face[s]).norm() + re) / a)) + 1;
+    for (long k = -1; k >= -rows; --k)
+      for (long i = static_cast<long>(std::floor(-re / a)) - 1; i <= last; ++i)
+        keep([s](std::size_t own) { return own == s; }, face_lattice_point(kind, dp, face[s], along, out_of_wall, i, k));
+  }
   return out;
 }
 

@@ -134,6 +134,57 @@ TEST(Walls, HexagonalClosedOutlineHasNoOpenEnds) {
   }
 }
 
+// A face along no lattice axis (a 35 degree slope meeting a floor) gets rows of its own on the hexagonal lattice: its
+// points lie on rows parallel to it at h / 2 and 3 h / 2 behind it, a apart along each row, odd rows shifted by a / 2
+// (face_lattice_point), while the floor keeps the lattice's own points. A slide laid on the same rows in front of the
+// face (k >= 0) continues them: no point of the slope's rows and a slide's first row closer than a.
+TEST(Walls, HexagonalSlopeHasRowsAlongItsFace) {
+  const double dp = 0.1, re = 2.1 * dp;
+  const LatticeKind hex = LatticeKind::hexagonal;
+  const double a = nearest_spacing(hex, dp), h = row_spacing(hex, dp);
+  const double beta = 35.0 * M_PI / 180.0;
+  const Vec<2> top(0.0, 2.0), toe(2.0 / std::tan(beta), 0.0), end(toe[0] + 1.0, 0.0);
+  EXPECT_FALSE(along_lattice_axes(top, toe));
+  EXPECT_TRUE(along_lattice_axes(toe, end));
+  EXPECT_DOUBLE_EQ(water_clearance(hex, dp, top, toe), 0.5 * h);
+  EXPECT_DOUBLE_EQ(water_clearance(hex, dp, toe, end), 0.0);
+  EXPECT_DOUBLE_EQ(water_clearance(LatticeKind::square, dp, top, toe), 0.5 * dp);
+  const auto pts = lattice_boundary({top, toe, end}, true, dp, re, hex);
+  const Vec<2> along = (toe - top).normalized(), out(-along[1], along[0]);  // out of the wall, into the fluid
+  std::vector<Vec<2>> slope_rows;
+  for (const auto& b : pts) {
+    const double s = (b.position - top).dot(along);
+    if (s < re || s > (toe - top).norm() - re) continue;  // clear of both ends: the slope's own points
+    slope_rows.push_back(b.position);
+    // On row k = -1 or -2 of the face's lattice: depth (|k| - 1/2) h, along-position (i + shift) a.
+    const double depth = -(b.position - top).dot(out);
+    const long k = depth < h ? -1 : -2;
+    EXPECT_NEAR(depth, (-k - 0.5) * h, 1e-9 * dp);
+    EXPECT_NEAR(b.depth, depth, 1e-9 * dp);
+    EXPECT_NEAR((b.normal - out).norm(), 0.0, 1e-12);
+    EXPECT_EQ(b.layer, k == -1 ? 0 : 1);
+    const double shift = k == -1 ? 0.5 : 0.0;
+    const double i = s / a - shift;
+    EXPECT_NEAR(i, std::round(i), 1e-9) << b.position.transpose();
+  }
+  EXPECT_GT(slope_rows.size(), 30u);
+  // Under the floor, away from the toe, the lattice's own points.
+  for (const auto& b : pts)
+    if (b.position[0] > toe[0] + re && b.position[1] < 0) {
+      const double j = b.position[1] / h - 0.5, odd = std::fmod(std::abs(std::round(j)), 2.0);
+      EXPECT_NEAR(j, std::round(j), 1e-9);
+      EXPECT_NEAR(b.position[0] / a - 0.5 - 0.5 * odd, std::round(b.position[0] / a - 0.5 - 0.5 * odd), 1e-9);
+    }
+  // The slide's first row in front of the face continues the rows: the nearest distance is a.
+  double nearest = 1e9;
+  for (long i = 5; i < 15; ++i) {
+    const Vec<2> p = face_lattice_point(hex, dp, top, along, out, i, 0);
+    EXPECT_NEAR((p - top).dot(out), 0.5 * h, 1e-12);
+    for (const auto& q : slope_rows) nearest = std::min(nearest, (p - q).norm());
+  }
+  EXPECT_NEAR(nearest, a, 1e-9);
+}
+
 // row_offset_to_meet moves the lattice by less than half a row spacing so that a row lies at the given height, and
 // for_each_lattice_point with that offset visits exactly the moved points.
 TEST(Walls, LatticeOffsetPutsARowAtAGivenHeight) {

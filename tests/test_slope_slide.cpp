@@ -1,0 +1,211 @@
+// Slides on real slopes (issue 29, item 3): a wall face at 20, 35 and 45 degrees, on both lattices, and a stiff
+// sediment block resting on it, in air. The closed forms: a block on a frictionless plane accelerates down it at
+// g sin(beta); with a Coulomb friction tan(phi_b) at g (sin(beta) - tan(phi_b) cos(beta)) where that is positive, and
+// stays where it is not. The block's centre of mass is followed step by step and a parabola fitted to its distance
+// down the slope over 0.3 s (its start included: a block that starts late is slower).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "fluid/lattice.hpp"
+#include "tests/scene_runner.hpp"
+#include "tests/sediment_block.hpp"
+
+namespace slide::testing {
+namespace {
+
+constexpr double g = 9.81;
+
+// A slope from (0, L sin beta) down to its toe, then a floor and a far wall; a block 0.2 m along the slope and 0.1 m
+// thick, its upper end 0.35 m down from the top: Bingham (tau_y 20 kPa, K 1 Pa s, 2000 kg/m^3), which its weight
+// (about 1.1 kPa of basal shear) does not yield, so it moves as one body. `basal` is its basal friction angle in
+// degrees (0: frictionless). `water_level` > 0 fills the tank to that height. The block settles, held across gravity,
+// for 0.2 s (coupling/relaxation.hpp).
+std::string block_on_slope(double slope_deg, LatticeKind lattice, double dp, double basal, double end_time,
+                           double water_level = 0.0) {
+  const double b = slope_deg * M_PI / 180.0, length = 1.2;
+  const Vec<2> top(0.0, length * std::sin(b)), toe(length * std::cos(b), 0.0);
+  const Vec<2> along(std::cos(b), -std::sin(b)), normal(std::sin(b), std::cos(b));
+  // 1e-5 m off the face: a vertex exactly on it may round to behind it.
+  const Vec<2> p1 = top + 0.35 * along + 1e-5 * normal, p2 = p1 + 0.2 * along, p3 = p2 + 0.1 * normal,
+               p4 = p1 + 0.1 * normal;
+  auto pt = [](const Vec<2>& p) { return fmt::format("[{:.9g}, {:.9g}]", p[0], p[1]); };
+  const std::string regions =
+      water_level > 0.0 ? fmt::format("[{{type: below_level, level: {}}}]", water_level) : std::string("[]");
+  return fmt::format(R"(particle_spacing: {dp}
+end_time: {end}
+lattice: {lattice}
+fluid:
+  phases: [{{name: water, density: 1000, rheology: {{model: newtonian, viscosity: 1.0e-3}}}}]
+  regions: {regions}
+walls:
+  - name: slope
+    points: [[-0.3, {top_y:.9g}], {top}, {toe}, [{end_x:.9g}, 0], [{end_x:.9g}, {wall_top:.9g}]]
+bodies:
+  - name: block
+    model: herschel_bulkley
+    shape: {{type: polygon, points: [{p1}, {p2}, {p3}, {p4}]}}
+    density: 2000
+    rheology: {{yield_stress: 20000, consistency: 1, flow_index: 1}}
+    basal_friction_angle: {basal}
+    front_direction: [{ax:.9g}, {ay:.9g}]
+method: {{initial_state: settled, settling_time: 0.2}}
+output: {{snapshots: false}}
+)",
+                     fmt::arg("dp", dp), fmt::arg("end", end_time), fmt::arg("lattice", to_string(lattice)),
+                     fmt::arg("regions", regions), fmt::arg("top_y", top[1]), fmt::arg("top", pt(top)),
+                     fmt::arg("toe", pt(toe)), fmt::arg("end_x", toe[0] + 1.0), fmt::arg("wall_top", top[1] + 0.2),
+                     fmt::arg("p1", pt(p1)), fmt::arg("p2", pt(p2)), fmt::arg("p3", pt(p3)), fmt::arg("p4", pt(p4)),
+                     fmt::arg("basal", basal), fmt::arg("ax", along[0]), fmt::arg("ay", along[1]));
+}
+
+struct SlopeMotion {
+  double acceleration = 0.0;  // m/s^2, of the parabola s(t) = s0 + v0 t + a t^2 / 2 fitted by least squares
+  double largest = 0.0;       // m, the largest displacement of a block particle
+  double dp = 0.0;
+};
+
+// Least-squares parabola through (t_k, s_k): its second derivative.
+double fitted_acceleration(const std::vector<double>& t, const std::vector<double>& s) {
+  // Normal equations of s = c0 + c1 t + c2 t^2.
+  double m[3][4] = {};
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const double row[3] = {1.0, t[k], t[k] * t[k]};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) m[i][j] += row[i] * row[j];
+      m[i][3] += row[i] * s[k];
+    }
+  }
+  for (int c = 0; c < 3; ++c)  // Gauss-Jordan; the matrix is symmetric positive definite
+    for (int r = 0; r < 3; ++r) {
+      if (r == c) continue;
+      const double f = m[r][c] / m[c][c];
+      for (int k = c; k < 4; ++k) m[r][k] -= f * m[c][k];
+    }
+  return 2.0 * m[2][3] / m[2][2];
+}
+
+SlopeMotion slide_down(double slope_deg, LatticeKind lattice, double dp, double basal, double end_time) {
+  auto scene = build_scene_text(fmt::format("slope_{}_{:.0f}_{:.0f}", to_string(lattice), slope_deg, basal),
+                                block_on_slope(slope_deg, lattice, dp, basal, end_time));
+  EXPECT_EQ(scene->slides.size(), 1u);
+  const std::uint8_t phase = scene->slides[0].phase;
+  const double b = slope_deg * M_PI / 180.0;
+  const Vec<2> along(std::cos(b), -std::sin(b));
+  auto& sim = *scene->simulation;
+  const auto start = slide_positions(sim.particles, phase);
+  SlopeMotion m;
+  m.dp = sim.options.dp;
+  std::vector<double> t{0.0}, s{0.0};
+  const double s0 = centre_of_mass(sim.particles, phase).dot(along);
+  EXPECT_TRUE(run_scene(*scene, [&](const Simulation<2>& sm) {
+    t.push_back(sm.time());
+    s.push_back(centre_of_mass(sm.particles, phase).dot(along) - s0);
+    m.largest = std::max(m.largest, largest_displacement(sm.particles, phase, start));
+  }));
+  m.acceleration = fitted_acceleration(t, s);
+  return m;
+}
+
+void expect_frictionless(double slope_deg, LatticeKind lattice, double dp) {
+  const SlopeMotion m = slide_down(slope_deg, lattice, dp, 0.0, 0.3);
+  const double exact = g * std::sin(slope_deg * M_PI / 180.0);
+  std::printf("%s lattice, dp %.3g, %.0f deg, frictionless: %.4f m/s^2 against g sin(beta) %.4f (%+.2f %%)\n",
+              std::string(to_string(lattice)).c_str(), dp, slope_deg, m.acceleration, exact,
+              100.0 * (m.acceleration / exact - 1.0));
+  EXPECT_NEAR(m.acceleration, exact, 0.02 * exact);
+}
+
+TEST(SlopeSlide, ParabolaFitIsExact) {
+  std::vector<double> t, s;
+  for (int k = 0; k < 30; ++k) t.push_back(0.01 * k), s.push_back(0.3 + 0.2 * t.back() + 0.5 * 3.25 * t.back() * t.back());
+  EXPECT_NEAR(fitted_acceleration(t, s), 3.25, 1e-9);
+}
+
+// Measured before the walls had rows along their faces (the lattice cut along the slope, a staircase): -46 / -16 /
+// -23 % on the hexagonal lattice at 20 / 35 / 45 degrees, and the block hopped 0.8 dp off the steps (its centre's
+// normal excursion 8.3 mm at 20 degrees). With the rows, and the slide laid on them: -2.7 / +0.0 / -1.6 % at dp 0.01;
+// the square lattice (layers laid along the face since issue 1): -1.3 / -0.8 / -0.2 %. The hexagonal 20 degree
+// figure comes from the block's two ends (the wall pairs' tangential force summed by twelfths along the block: the
+// upper two twelfths give -2.3 %, the middle nothing) and shrinks with the spacing (-1.5 % at dp 0.005) and with the
+// block's length (-0.6 % for a 0.4 m block at dp 0.01); that case runs at dp 0.005.
+TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLatticeAt20Degrees) {
+  expect_frictionless(20.0, LatticeKind::hexagonal, 0.005);
+}
+TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLatticeAt35Degrees) {
+  expect_frictionless(35.0, LatticeKind::hexagonal, 0.01);
+}
+TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLatticeAt45Degrees) {
+  expect_frictionless(45.0, LatticeKind::hexagonal, 0.01);
+}
+TEST(SlopeSlide, FrictionlessBlockOnTheSquareLattice) {
+  for (const double deg : {20.0, 35.0, 45.0}) expect_frictionless(deg, LatticeKind::square, 0.01);
+}
+
+// A Coulomb friction angle above the slope's holds the block: under half a spacing in a second (measured: 3.7 mm,
+// 0.37 dp, on the hexagonal lattice; the wall carries the drive at a slip speed of order g dt,
+// fluid/basal_friction.hpp).
+TEST(SlopeSlide, CoulombBlockStaysWhereItsFrictionHolds) {
+  const SlopeMotion m = slide_down(20.0, LatticeKind::hexagonal, 0.01, 25.0, 1.0);
+  std::printf("20 deg, phi_b 25 deg: largest displacement in 1 s %.3g m = %.2f dp\n", m.largest, m.largest / m.dp);
+  EXPECT_LT(m.largest, 0.5 * m.dp);
+}
+
+// A slope steeper than the friction angle: the block starts from rest. Before the wall's slip was the step's trial
+// slip (fluid/basal_friction.hpp), the block at rest saw a no-slip wall and did not move at all (20 deg, phi_b 15 deg:
+// 0.0 mm in 0.3 s). The closed form g (sin(beta) - tan(phi_b) cos(beta)) is not met: measured -18 / -1.9 / -5.1 %
+// (hexagonal) and -20 / -5.2 / -3.1 % (square) at 20 / 35 / 45 degrees, dp 0.01: the wall holds the sliding block
+// with some 3-10 % more than tan(phi_b) times its normal stress (as the Mohr-Coulomb layer's floor does,
+// tests/test_sediment_block.cpp), which weighs most where sin(beta) - tan(phi_b) cos(beta) is small. Left open
+// (issue 29's closing note); this test holds that the block slides, and at no less than half the closed form.
+TEST(SlopeSlide, CoulombBlockSlidesFromRestOnASteeperSlope) {
+  for (const double deg : {20.0, 35.0}) {
+    const SlopeMotion m = slide_down(deg, LatticeKind::hexagonal, 0.01, 15.0, 0.3);
+    const double b = deg * M_PI / 180.0, exact = g * (std::sin(b) - std::tan(15.0 * M_PI / 180.0) * std::cos(b));
+    std::printf("%.0f deg, phi_b 15 deg: %.4f m/s^2 against %.4f (%+.1f %%)\n", deg, m.acceleration, exact,
+                100.0 * (m.acceleration / exact - 1.0));
+    EXPECT_GT(m.acceleration, 0.5 * exact);
+    EXPECT_LT(m.acceleration, exact * 1.02);
+  }
+}
+
+// On the hexagonal lattice the water and a slide on a slope start on the rows of the slope's wall: the water half a
+// row spacing or more in front of the face (fluid/walls.hpp, water_clearance), the slide's lowest particles exactly
+// there, and no water within a spacing of the slide.
+TEST(SlopeSlide, WaterAndSlideStartOnTheSlopesRows) {
+  const double dp = 0.01;
+  std::string yaml = block_on_slope(35.0, LatticeKind::hexagonal, dp, 0.0, 0.01, 0.5);
+  const std::string settled = "initial_state: settled, settling_time: 0.2";
+  yaml.replace(yaml.find(settled), settled.size(), "initial_state: lattice");  // the particles as placed
+  auto scene = build_scene_text("slope_rows", yaml);
+  const auto& P = scene->simulation->particles;
+  const double b = 35.0 * M_PI / 180.0, h = row_spacing(LatticeKind::hexagonal, dp);
+  const Vec<2> top(0.0, 1.2 * std::sin(b)), normal(std::sin(b), std::cos(b));
+  const std::uint8_t phase = scene->slides[0].phase;
+  double water_nearest = 1e9, slide_lowest = 1e9, water_to_slide = 1e9;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid) continue;
+    const double above = (P.position[i] - top).dot(normal);
+    const bool over_slope = P.position[i][1] > 0.3;  // clear of the toe and the floor
+    if (P.phase[i] == phase) {
+      slide_lowest = std::min(slide_lowest, above);
+      for (std::size_t j = 0; j < P.size(); ++j)
+        if (P.kind[j] == Kind::fluid && P.phase[j] != phase)
+          water_to_slide = std::min(water_to_slide, (P.position[j] - P.position[i]).norm());
+    } else if (over_slope) {
+      water_nearest = std::min(water_nearest, above);
+    }
+  }
+  EXPECT_GE(water_nearest, 0.5 * h - 1e-9 * dp);
+  EXPECT_LT(water_nearest, 1.5 * h + 1e-9 * dp);
+  EXPECT_NEAR(slide_lowest, 0.5 * h, 1e-6 * dp);  // the scene states the face to 9 significant digits
+  EXPECT_GE(water_to_slide, dp * (1.0 - 1e-9));
+}
+
+}  // namespace
+}  // namespace slide::testing
