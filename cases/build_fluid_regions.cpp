@@ -167,7 +167,8 @@ void fill_fluid_regions(SceneBuild& b) {
   SlidePoints slides;
   for (const auto& slide : b.slides) fill_region(b, slide_shape(b, slide), slide.phase, slide.path, true, slides);
   const Particles<2>& placed = b.particles();
-  slides.position.assign(placed.position.begin() + static_cast<std::ptrdiff_t>(b.boundary_count), placed.position.end());
+  slides.position.assign(placed.position.begin() + static_cast<std::ptrdiff_t>(b.boundary_count),
+                         placed.position.end());
   if (!slides.position.empty()) {
     Vec<2> lo = slides.position[0], hi = lo;
     for (const auto& x : slides.position) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);

@@ -1,6 +1,7 @@
 // Step: the walls (walls[]): their faces, and their wall and dummy particles (square lattice: layers behind the
 // face polyline; hexagonal: the lattice points behind faces along its rows or columns, rows laid along any other
-// face, to the depth re: fluid/walls.hpp), each owned by its wall for messages. On the hexagonal lattice with bodies, the lattice is first moved to meet the first body's bottom.
+// face, to the depth re: fluid/walls.hpp), each owned by its wall for messages. On the hexagonal lattice with bodies,
+// the lattice is first moved to meet the first body's bottom.
 #include <fmt/format.h>
 
 #include <algorithm>

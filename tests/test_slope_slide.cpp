@@ -123,7 +123,10 @@ void expect_frictionless(double slope_deg, LatticeKind lattice, double dp) {
 
 TEST(SlopeSlide, ParabolaFitIsExact) {
   std::vector<double> t, s;
-  for (int k = 0; k < 30; ++k) t.push_back(0.01 * k), s.push_back(0.3 + 0.2 * t.back() + 0.5 * 3.25 * t.back() * t.back());
+  for (int k = 0; k < 30; ++k) {
+    t.push_back(0.01 * k);
+    s.push_back(0.3 + 0.2 * t.back() + 0.5 * 3.25 * t.back() * t.back());
+  }
   EXPECT_NEAR(fitted_acceleration(t, s), 3.25, 1e-9);
 }
 
