@@ -97,11 +97,13 @@ RegionShape below_level(SceneBuild& b, const YAML::Node& rn, const std::string& 
           }};
 }
 
-// A deformable slide: the lattice points inside its outline and in front of the walls (as water is placed). On the
-// hexagonal lattice, a slide resting on a face that its lattice cannot follow (fluid/walls.hpp, along_lattice_axes)
-// is laid on the rows of that face's wall, continued in front of it: its base is then one flat row on the wall's
-// flat row. Why: cut from the fluid's lattice, the base is a staircase, and a stiff sediment block on a frictionless
-// 20 degree slope (walls of rows along the face) accelerated 6.1 % below g sin(beta) (issue 29, item 3).
+// A deformable slide: the lattice points inside its outline and in front of the walls (as water is placed). A slide
+// resting on a face along neither of the lattice's axes (fluid/walls.hpp, along_lattice_axes) is laid on rows along
+// that face (fluid/lattice.hpp, face_lattice_point; on the hexagonal lattice they continue the wall's rows): its base
+// is then one flat row on the wall's flat row. Why: cut from the fluid's lattice, the base is a staircase, and a stiff
+// sediment block on a frictionless 20 degree slope accelerated 6.1 % below g sin(beta) on the hexagonal lattice (the
+// wall's rows along the face), and 3.2 % below at 35 degrees on the square lattice, pressed onto its face while it
+// settled (coupling/relaxation.hpp); on rows along the face, -0.9 % and -0.8 % (issue 29, item 3).
 RegionShape slide_shape(const SceneBuild& b, const SceneBuild::Slide& slide) {
   Vec<2> lo = from_rigid(slide.outline[0]), hi = lo;
   for (const auto& v : slide.outline) lo = lo.cwiseMin(from_rigid(v)), hi = hi.cwiseMax(from_rigid(v));
@@ -114,7 +116,7 @@ RegionShape slide_shape(const SceneBuild& b, const SceneBuild::Slide& slide) {
   const Vec<2>& g = b.sim->options.gravity;
   const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
   if (const auto face = resting_face(b.faces, slide.outline, b.dp, down);
-      face && b.hexagonal && !along_lattice_axes(face->a, face->b))
+      face && !along_lattice_axes(face->a, face->b))
     shape.along = face;
   return shape;
 }

@@ -142,8 +142,15 @@ void settle(SceneBuild& b) {
   if (b.initial_state != InitialState::settled) return;
   const YAML::Node m = b.r["method"];
   try {
-    std::vector<std::uint8_t> slides;  // deformable slides are held while the water settles, like rigid ones
-    for (const auto& s : b.slides) slides.push_back(static_cast<std::uint8_t>(s.phase));
+    // Deformable slides are held while the water settles, like rigid ones, free along the normal of the face they
+    // rest on (coupling/relaxation.hpp).
+    const Vec<2>& g = b.sim->options.gravity;
+    const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
+    std::vector<HeldPhase> slides;
+    for (const auto& s : b.slides) {
+      const auto face = resting_face(b.faces, s.outline, b.dp, down);
+      slides.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<2>(-face->inward) : down});
+    }
     b.scene->settling =
         relax_at_rest(*b.sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>(), slides);
   } catch (const std::runtime_error& e) {

@@ -15,20 +15,22 @@ namespace {
 
 // Settling's bookkeeping after each step: the largest fluid speed, and the same damping for floating bodies as the
 // fluid gets (Simulation::correct_with_pressure_gradient: u <- u exp(-rate dt)).
-// Held phases' particles are held across gravity: they go back to where they started (by id) in the directions
-// normal to g and keep only their motion along g. Why not along g too: a slide held entirely kept the uncompressed
-// lattice's number density, so it started at t = 0 with no pressure at all (measured on the Grilli slide: p = 0 to
-// 300 Pa inside it against the 1.2-1.9 kPa of its weight and the water above), collapsed as a liquid until its
-// weight had compressed it, and under water its effective stress began far below the pore pressure. Free along g,
-// it compresses under its weight and the water's, as the water does, by about g H / c0^2 of its height (sub-millimetre),
-// and starts at rest at its hydrostatic pressure.
+// Held phases' particles go back to where they started (by id) after every step, except along their phase's free
+// direction: the normal of the face the slide rests on (g for a slide on no face). Why not held entirely: a slide
+// held so kept the uncompressed lattice's number density, so it started at t = 0 with no pressure at all (measured on
+// the Grilli slide: p = 0 to 300 Pa inside it against the 1.2-1.9 kPa of its weight and the water above), collapsed as
+// a liquid until its weight had compressed it, and under water its effective stress began far below the pore
+// pressure. Free along the face's normal, it compresses under its weight and the water's, as the water does, by
+// about g H / c0^2 of its height (sub-millimetre), and starts at rest at its hydrostatic pressure. Why not free along
+// g: on a slope of angle beta the face then carries the whole weight along g, a normal force 1 / cos(beta) of the
+// weight where the weight's normal part is cos(beta) of it, so the slide started pressed on the face with
+// 1 / cos^2(beta) its weight's normal stress (a block on a 45 degree face: 2400 Pa at its base against 1241 Pa), and
+// its basal friction held it with that much more at first.
 class SettlingObserver : public StepObserver<2> {
  public:
-  SettlingObserver(Relaxation& out, RigidBodies* floating, const Particles<2>& P,
-                   const std::vector<std::uint8_t>& held_phases, const Vec<2>& gravity)
-      : out_(out), floating_(floating), held_(256, false), start_(P.real_count()),
-        down_(gravity.norm() > 0.0 ? Vec<2>(gravity.normalized()) : Vec<2>::Zero()) {
-    for (auto ph : held_phases) held_[ph] = true;
+  SettlingObserver(Relaxation& out, RigidBodies* floating, const Particles<2>& P, const std::vector<HeldPhase>& held)
+      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<2>::Zero()), start_(P.real_count()) {
+    for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
     for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   }
   void after_step(Simulation<2>& sim, double dt) override {
@@ -36,8 +38,9 @@ class SettlingObserver : public StepObserver<2> {
     for (std::size_t i = 0; i < P.real_count(); ++i)
       if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
         const Vec<2>& x0 = start_[P.id[i]];
-        P.position[i] = x0 + (P.position[i] - x0).dot(down_) * down_;
-        P.velocity[i] = P.velocity[i].dot(down_) * down_;
+        const Vec<2>& free = free_[P.phase[i]];
+        P.position[i] = x0 + (P.position[i] - x0).dot(free) * free;
+        P.velocity[i] = P.velocity[i].dot(free) * free;
       }
     out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
     if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
@@ -47,14 +50,14 @@ class SettlingObserver : public StepObserver<2> {
   Relaxation& out_;
   RigidBodies* floating_;
   std::vector<bool> held_;
+  std::vector<Vec<2>> free_;   // by phase: the held phase's free direction (unit)
   std::vector<Vec<2>> start_;  // by id
-  Vec<2> down_;                 // g / |g|
 };
 
 }  // namespace
 
 Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
-                         const std::vector<std::uint8_t>& held_phases) {
+                         const std::vector<HeldPhase>& held) {
   Relaxation out;
   out.duration = duration;
   out.damping_rate = damping_rate;
@@ -74,7 +77,7 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
   const double saved_rate = sim.options.velocity_damping_rate;
   sim.set_velocity_damping(damping_rate);
   sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
-  SettlingObserver observer(out, floating ? bodies.get() : nullptr, P, held_phases, sim.options.gravity);
+  SettlingObserver observer(out, floating ? bodies.get() : nullptr, P, held);
   const AdvanceResult result = advance<2>(sim, duration, {&observer});
   if (result.instability)
     throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));

@@ -53,11 +53,15 @@ inline std::optional<SettlingInstability> parse_settling_instability(const std::
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
 // settling goes unstable (its message: settling_instability_message above). On return the simulation is at time 0
 // with every fluid velocity zero.
-// held_phases: fluid particles of these phases (deformable slides) are held across gravity while the water settles
-// around them, as a rigid slide is held: put back after every step in the directions normal to g, free along g so
-// that they compress to their hydrostatic pressure (relaxation.cpp). Sediment that is not held settles as a fluid
-// (Simulation::set_rheology_suspended): its rheology starts at t = 0.
+// held: fluid particles of these phases (deformable slides) are held while the water settles around them, as a
+// rigid slide is held: put back after every step, but free along their phase's unit `free_direction` (the normal of
+// the face the slide rests on, or g), so that they compress to their hydrostatic pressure (relaxation.cpp).
+// Sediment that is not held settles as a fluid (Simulation::set_rheology_suspended): its rheology starts at t = 0.
+struct HeldPhase {
+  std::uint8_t phase = 0;
+  Vec<2> free_direction = Vec<2>(0.0, -1.0);
+};
 Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
-                         const std::vector<std::uint8_t>& held_phases = {});
+                         const std::vector<HeldPhase>& held = {});
 
 }  // namespace slide

@@ -130,21 +130,17 @@ TEST(SlopeSlide, ParabolaFitIsExact) {
   EXPECT_NEAR(fitted_acceleration(t, s), 3.25, 1e-9);
 }
 
-// Measured before the walls had rows along their faces (the lattice cut along the slope, a staircase): -46 / -16 /
-// -23 % on the hexagonal lattice at 20 / 35 / 45 degrees, and the block hopped 0.8 dp off the steps (its centre's
-// normal excursion 8.3 mm at 20 degrees). With the rows, and the slide laid on them: -2.7 / +0.0 / -1.6 % at dp 0.01;
-// the square lattice (layers laid along the face since issue 1): -1.3 / -0.8 / -0.2 %. The hexagonal 20 degree
-// figure comes from the block's two ends (the wall pairs' tangential force summed by twelfths along the block: the
-// upper two twelfths give -2.3 %, the middle nothing) and shrinks with the spacing (-1.5 % at dp 0.005) and with the
-// block's length (-0.6 % for a 0.4 m block at dp 0.01); that case runs at dp 0.005.
-TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLatticeAt20Degrees) {
-  expect_frictionless(20.0, LatticeKind::hexagonal, 0.005);
-}
-TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLatticeAt35Degrees) {
-  expect_frictionless(35.0, LatticeKind::hexagonal, 0.01);
-}
-TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLatticeAt45Degrees) {
-  expect_frictionless(45.0, LatticeKind::hexagonal, 0.01);
+// Measured at 20 / 35 / 45 degrees, dp 0.01:
+//  * the walls cut from the hexagonal lattice (a staircase along the slope): -46 / -16 / -23 %, and the block hopped
+//    0.8 dp off the steps (its centre's normal excursion 8.3 mm at 20 degrees);
+//  * walls of rows along the face, the block cut from the lattice: -6.1 / -0.3 / -1.5 %;
+//  * and the block laid on the face's rows: -2.7 / +0.0 / -1.6 % (the 20 degree shortfall at the block's two ends:
+//    the wall pairs' tangential force summed by twelfths along the block, the upper two give -2.3 %);
+//  * and the block held while it settles free along the face's normal, not along g (coupling/relaxation.hpp), so
+//    that it starts at its weight's normal stress, not 1 / cos^2(beta) of it: -0.9 / -0.5 / +0.2 % (hexagonal),
+//    -0.1 / -0.1 / -0.5 % (square; -1.3 / -0.8 / -0.2 % with the block cut from the lattice and held along g).
+TEST(SlopeSlide, FrictionlessBlockOnTheHexagonalLattice) {
+  for (const double deg : {20.0, 35.0, 45.0}) expect_frictionless(deg, LatticeKind::hexagonal, 0.01);
 }
 TEST(SlopeSlide, FrictionlessBlockOnTheSquareLattice) {
   for (const double deg : {20.0, 35.0, 45.0}) expect_frictionless(deg, LatticeKind::square, 0.01);
@@ -161,11 +157,12 @@ TEST(SlopeSlide, CoulombBlockStaysWhereItsFrictionHolds) {
 
 // A slope steeper than the friction angle: the block starts from rest. Before the wall's slip was the step's trial
 // slip (fluid/basal_friction.hpp), the block at rest saw a no-slip wall and did not move at all (20 deg, phi_b 15 deg:
-// 0.0 mm in 0.3 s). The closed form g (sin(beta) - tan(phi_b) cos(beta)) is not met: measured -18 / -1.9 / -5.1 %
-// (hexagonal) and -20 / -5.2 / -3.1 % (square) at 20 / 35 / 45 degrees, dp 0.01: the wall holds the sliding block
-// with some 3-10 % more than tan(phi_b) times its normal stress (as the Mohr-Coulomb layer's floor does,
-// tests/test_sediment_block.cpp), which weighs most where sin(beta) - tan(phi_b) cos(beta) is small. Left open
-// (issue 29's closing note); this test holds that the block slides, and at no less than half the closed form.
+// 0.0 mm in 0.3 s). The closed form g (sin(beta) - tan(phi_b) cos(beta)) is met at 45 degrees only: measured -17 /
+// -2.9 / -1.9 % (hexagonal) and -10 / -3.8 / -1.5 % (square) at 20 / 35 / 45 degrees, dp 0.01. The sliding block
+// chatters on the wall's row (its base pressure swings between 0 and 2.7 times its weight's normal stress from
+// 0.07 s on, frictionless or not), and the wall holds it with some 3-9 % more than tan(phi_b) times its normal
+// stress, which weighs most where sin(beta) - tan(phi_b) cos(beta) is small. Left open (issue 29's closing note);
+// this test holds that the block slides, and at no less than half the closed form.
 TEST(SlopeSlide, CoulombBlockSlidesFromRestOnASteeperSlope) {
   for (const double deg : {20.0, 35.0}) {
     const SlopeMotion m = slide_down(deg, LatticeKind::hexagonal, 0.01, 15.0, 0.3);
