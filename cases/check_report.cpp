@@ -89,6 +89,10 @@ std::string bodies(const Scene& scene) {
         b.name, b.motion, b.particles, b.mass, b.mass_particles, b.inertia, b.inertia_particles, b.area,
         b.displaced_area, b.buoyancy_ratio);
     const auto s = scene.simulation->bodies()->state(static_cast<int>(k));
+    if (b.moved_to_draft != 0.0)
+      out += fmt::format("  placed at its draft below the still-water level: moved {:+.3f} mm from where the scene "
+                         "put it (Archimedes on its outline)\n",
+                         1000.0 * b.moved_to_draft);
     // Where a body that floated with the water while it settled came to rest.
     if (b.free_while_settling && scene.settling)
       out += fmt::format("  settled with the water: centre ({:.6g}, {:.6g}) m, angle {:.4g} deg, {:.3g} mm from "

@@ -22,6 +22,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   check_period(b);
   check_particle_budget(b);  // before any particle is made
   b.phases = read_phases(r["fluid"]["phases"]);
+  place_floating_bodies(b);  // before anything is laid around them
   build_walls(b);  // first: below_level regions need the faces, bodies the lattice offset and faces
   build_slides_and_bodies(b);
   fill_fluid_regions(b);

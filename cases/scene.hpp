@@ -77,6 +77,7 @@ struct BodyReport {
   Vec<2> placed = Vec<2>::Zero();  // centre of mass where the scene puts it, m
   std::vector<Vec<2>> outline;     // where the scene puts it, counter-clockwise, m
   bool free_while_settling = false;  // during_settling: free
+  double moved_to_draft = 0.0;       // m up (< 0: down) from where the scene put it to its draft (place_floating_bodies)
 };
 
 // A deformable slide (bodies[k] with a model other than rigid): sediment particles of its own phase.

@@ -59,6 +59,8 @@ struct SceneBuild {
   bool in_period(double x) const;
   // Set by read_phases.
   ScenePhases phases;
+  // Set by place_floating_bodies: each body moved to its draft (its key path) and by how much, m (up > 0).
+  std::vector<std::pair<std::string, double>> moved_to_draft;
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.
   std::vector<FaceSegment> faces;
   std::vector<std::string> boundary_owner;
@@ -89,6 +91,7 @@ void check_lattice_choices(SceneBuild& b);     // build_options.cpp
 void check_period(SceneBuild& b);             // build_options.cpp
 void check_particle_budget(SceneBuild& b);     // build_particle_budget.cpp
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
+void place_floating_bodies(SceneBuild& b);     // build_bodies.cpp: bodies that float while settling, to their draft
 void build_walls(SceneBuild& b);               // build_walls.cpp
 void build_slides_and_bodies(SceneBuild& b);   // build_bodies.cpp
 void fill_fluid_regions(SceneBuild& b);        // build_fluid_regions.cpp

@@ -114,9 +114,10 @@ Schema body_schema() {
        {"release_time",
         S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
-                                     "put while the water settles; free lets a free body float with the water under "
-                                     "the same damping, so that t = 0 finds it at rest where the water holds it (a "
-                                     "floating body's equilibrium)",
+                                     "put while the water settles; free first moves a rigid body lighter than water "
+                                     "up or down to its draft below the still-water level (Archimedes on its outline, "
+                                     "heave only; the highest below_level region's level, gravity along -y), lays the "
+                                     "water around it there, and lets it float with the water under the same damping",
                                      during_settling_names.names(), std::string(to_string(DuringSettling::held)))},
        {"prescribed",
         S::map(
