@@ -1,5 +1,7 @@
 #include "coupling/simulation.hpp"
 
+#include "fluid/corrective_matrix.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -174,6 +176,7 @@ void Simulation<D>::compute_pressure() {
   pair_weights_.mark_taken_at(step_count_, factor);
   copy_to_ghosts(P, P.number_density);
   copy_to_ghosts(P, P.pressure);
+  update_gradient_correction();
   if (options.surface_pressure == SurfacePressure::extrapolated) {
     // Surface particles read only bulk ones, whose pressures are final: one pass, in any order.
     const auto is_bulk = [&](std::uint32_t b) { return P.number_density[b] >= surface_n; };
@@ -203,6 +206,20 @@ void Simulation<D>::compute_pressure() {
     });
   }
   copy_to_ghosts(P, P.pressure);
+}
+
+// The corrected gradient's matrices at the particles' present positions (fluid/corrective_matrix.hpp); identity
+// matrices for the other models are never read.
+template <int D>
+void Simulation<D>::update_gradient_correction() {
+  if (options.gradient != GradientModel::corrected) return;
+  auto& P = particles;
+  const double surface_n = options.free_surface_beta * lattice.n0, r_e = re();
+  P.gradient_correction.resize(P.size());
+  parallel_for(P.real_count(), [&](std::size_t i) {
+    P.gradient_correction[i] = corrective_matrix<D>(i, P, list_, r_e, lattice.n0, lattice.kappa, surface_n);
+  });
+  copy_to_ghosts(P, P.gradient_correction);
 }
 
 template <int D>
@@ -433,6 +450,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     // channel driven by a body force f was offset by dt f (+0.4 % of the Bingham channel's centreline, measured).
     // The step itself applies only a (below) and then the new pressure's gradient, as the explicit scheme does.
     const GradientModel gradient = options.gradient;
+    update_gradient_correction();  // the particles may have been re-sorted since the pressure's stage
     // Only this stage needs it (16 bytes a particle otherwise held for nothing); the solve reads real fluid entries.
     if (predictor_acceleration_.size() != P.size()) predictor_acceleration_.assign(P.size(), Vec<D>::Zero());
     parallel_for(n, [&](std::size_t i) {

@@ -151,6 +151,7 @@ class Simulation {
   void record(const ViscousSolveReport& r);
   void predict_with_viscosity_and_gravity(double dt);
   void compute_pressure();
+  void update_gradient_correction();
   void correct_with_pressure_gradient(double dt);
   void collide(double dt);
   void move_bodies(double dt);

@@ -46,6 +46,9 @@ struct Particles {
   // Boundary particles: the weight with which they count in their neighbours' number density (1 unless the wall
   // model mirrors the fluid, fluid/wall_pressure.hpp). Fluid particles hold 1.
   std::vector<double> wall_fill;
+  // Each particle's corrective matrix for the corrected pressure gradient, set where the pressure is
+  // (fluid/corrective_matrix.hpp); per step, not carried through re-sorting.
+  std::vector<Mat<D>> gradient_correction;
   // Boundary particles of a rigid body: their entry in body_frames (-1 for fixed walls and fluid). Their world
   // position, velocity and normal are set from the body's pose every step, never integrated.
   std::vector<std::int32_t> body_frame;
