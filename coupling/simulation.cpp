@@ -129,6 +129,7 @@ void Simulation<D>::update_neighbors(bool force) {
   pair_weights_.forget();  // of the list before
   position_at_build_ = x;
   ++rebuilds_;
+  correction_current_ = false;  // of the order before
 }
 
 // Copies every real particle's motion into its ghosts (nothing to do when not periodic).
@@ -160,15 +161,23 @@ void Simulation<D>::compute_pressure() {
   pair_weights_.shape_like(list_);
   const std::vector<double>* fill = options.wall_pressure == WP::mirror ? &P.wall_fill : nullptr;
   const double surface_n = options.free_surface_beta * lattice.n0;
-  // A fluid particle's pressure follows from its own number density (seed eq. 7): in the same pass.
+  const bool corrected = options.gradient == GradientModel::corrected;
+  if (corrected) P.gradient_correction.resize(P.size());
+  // A fluid particle's pressure follows from its own number density (seed eq. 7), and the corrected gradient's
+  // matrix from the pair factors just kept (boundary particles keep the identity): in the same pass.
   parallel_for(n, [&](std::size_t i) {
-    const double n_i =
-        P.kind[i] == Kind::fluid
-            ? number_density_keeping_weights<D>(i, P.position, fill, list_, r_e, pair_weights_.of(list_, i), factor)
-        : fill ? weighted_number_density_of<D>(i, P.position, *fill, list_, r_e)
-               : number_density_of<D>(i, P.position, list_, r_e);
+    const bool fluid = P.kind[i] == Kind::fluid;
+    Mat<D> moment;
+    const double n_i = fluid ? number_density_keeping_weights<D>(i, P.position, fill, list_, r_e,
+                                                                 pair_weights_.of(list_, i), factor,
+                                                                 corrected ? &moment : nullptr)
+                       : fill ? weighted_number_density_of<D>(i, P.position, *fill, list_, r_e)
+                              : number_density_of<D>(i, P.position, list_, r_e);
     P.number_density[i] = n_i;
-    if (P.kind[i] != Kind::fluid) return;
+    if (corrected)  // I for a boundary or free-surface particle, as corrective_matrix
+      P.gradient_correction[i] = fluid && n_i >= surface_n ? faded_inverse<D>(moment, lattice.kappa * lattice.n0)
+                                                           : Mat<D>::Identity();
+    if (!fluid) return;
     double p = n_i < surface_n ? 0.0 : eos.pressure(n_i, P.density[i]);
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
@@ -176,7 +185,10 @@ void Simulation<D>::compute_pressure() {
   pair_weights_.mark_taken_at(step_count_, factor);
   copy_to_ghosts(P, P.number_density);
   copy_to_ghosts(P, P.pressure);
-  update_gradient_correction();
+  if (corrected) {
+    copy_to_ghosts(P, P.gradient_correction);
+    correction_current_ = true;
+  }
   if (options.surface_pressure == SurfacePressure::extrapolated) {
     // Surface particles read only bulk ones, whose pressures are final: one pass, in any order.
     const auto is_bulk = [&](std::uint32_t b) { return P.number_density[b] >= surface_n; };
@@ -220,6 +232,7 @@ void Simulation<D>::update_gradient_correction() {
     P.gradient_correction[i] = corrective_matrix<D>(i, P, list_, r_e, lattice.n0, lattice.kappa, surface_n);
   });
   copy_to_ghosts(P, P.gradient_correction);
+  correction_current_ = true;
 }
 
 template <int D>
@@ -450,7 +463,10 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     // channel driven by a body force f was offset by dt f (+0.4 % of the Bingham channel's centreline, measured).
     // The step itself applies only a (below) and then the new pressure's gradient, as the explicit scheme does.
     const GradientModel gradient = options.gradient;
-    update_gradient_correction();  // the particles may have been re-sorted since the pressure's stage
+    // The matrices of the last pressure stage, one step's motion old (this is the predictor's estimate of the step's
+    // pressure gradient, not the one applied), unless the particles were re-sorted or restored since, or there was
+    // none: computing them afresh every step took ... of a sediment step (stop 31).
+    if (!correction_current_) update_gradient_correction();
     // Only this stage needs it (16 bytes a particle otherwise held for nothing); the solve reads real fluid entries.
     if (predictor_acceleration_.size() != P.size()) predictor_acceleration_.assign(P.size(), Vec<D>::Zero());
     parallel_for(n, [&](std::size_t i) {
@@ -673,6 +689,7 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(particles.body_frames.offset);
   in.get(particles.body_frames.normal);
   pair_weights_.forget();
+  correction_current_ = false;
   in.get(particles.ghost_source);
   in.get(particles.ghost_shift);
   particles.removed_count = in.get<std::uint64_t>();

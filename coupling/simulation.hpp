@@ -184,6 +184,9 @@ class Simulation {
   std::vector<Vec<D>> predictor_acceleration_;  // semi-implicit viscous stage: a - grad p / rho given to the solve
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
+  // P.gradient_correction holds the matrices of the last pressure stage for the particles in their present order
+  // (the corrected gradient; a rebuild, which re-sorts, or a restore clears it).
+  bool correction_current_ = false;
   bool rheology_ = false;  // some phase is non-Newtonian
   bool rheology_suspended_ = false;
   bool basal_friction_ = false;  // some phase has a Coulomb basal friction (fluid/basal_friction.hpp)

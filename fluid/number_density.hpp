@@ -39,16 +39,17 @@ double weighted_number_density_of(std::size_t i, const std::vector<Vec<D>>& x, c
 // reads (fluid/listed_pairs.hpp). fill: the neighbours' weights, or nullptr for 1 each. The terms and their order are
 // those above (a zero weight beyond re adds nothing to a sum that starts at +0 and has no negative term), so the sums
 // are bit-identical to them.
+// moment: nullptr, or (the derivative factor only) the corrected gradient's second moment (listed_kernel_weights).
 template <int D>
 double number_density_keeping_weights(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>* fill,
                                       const NeighborList& nl, double re, double* factor,
-                                      PairFactor which = PairFactor::w_over_r2) {
+                                      PairFactor which = PairFactor::w_over_r2, Mat<D>* moment = nullptr) {
   const std::size_t count = nl.count[i];
   double* w = listed_weights_room(count);
   if (which == PairFactor::w_over_r2)
     listed_kernel_weights<D, PairFactor::w_over_r2>(x[i], x, nl.begin(i), count, re, w, factor);
   else
-    listed_kernel_weights<D, PairFactor::derivative_over_r>(x[i], x, nl.begin(i), count, re, w, factor);
+    listed_kernel_weights<D, PairFactor::derivative_over_r>(x[i], x, nl.begin(i), count, re, w, factor, moment);
   double n = 0.0;
   const std::uint32_t* nb = nl.begin(i);
   if (fill)

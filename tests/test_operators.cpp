@@ -21,6 +21,12 @@ namespace {
 
 using testing::Lattice;
 
+std::uint64_t bits(double v) {
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
 
 template <int D>
 void expect_number_density_is_n0(LatticeKind kind = LatticeKind::square) {
@@ -79,7 +85,9 @@ TEST(Operators, CorrectedGradientIsExactOnAShearedLattice) {
     build_neighbor_list(grid, P.position, L.re, L.list);
     for (auto& n : P.number_density) n = L.constants.n0;  // none counts as a free-surface particle
     const Mat<2> Lc = corrective_matrix<2>(L.centre, P, L.list, L.re, L.constants.n0, L.constants.kappa, 0.0);
-    if (!sheared) EXPECT_NEAR((Lc - Mat<2>::Identity()).norm(), 0.0, 1e-12);
+    if (!sheared) {
+      EXPECT_NEAR((Lc - Mat<2>::Identity()).norm(), 0.0, 1e-12);
+    }
     P.gradient_correction.assign(P.size(), Lc);  // homogeneous: every full support has this one
     const Vec<2> slope(3.5, -1.5);
     for (std::size_t i = 0; i < P.size(); ++i) P.pressure[i] = 300.0 + slope.dot(P.position[i]);
@@ -88,16 +96,75 @@ TEST(Operators, CorrectedGradientIsExactOnAShearedLattice) {
     const Vec<2> plain = pressure_gradient<2>(GradientModel::variational, L.centre, P, L.list, L.re, L.constants.n0,
                                               L.constants.kappa);
     EXPECT_NEAR((corrected - slope).norm(), 0.0, 1e-9 * slope.norm()) << (sheared ? "sheared" : "regular");
-    if (sheared) EXPECT_GT((plain - slope).norm(), 0.03 * slope.norm());  // what the correction is for
-    else EXPECT_NEAR((plain - corrected).norm(), 0.0, 1e-9 * slope.norm());
+    if (sheared) {
+      EXPECT_GT((plain - slope).norm(), 0.03 * slope.norm());  // what the correction is for
+    } else {
+      EXPECT_NEAR((plain - corrected).norm(), 0.0, 1e-9 * slope.norm());
+    }
   }
 }
 
-std::uint64_t bits(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
+// The closed-form smallest eigenvalue (fluid/corrective_matrix.hpp) against Eigen's iterative solver, and the test
+// "smallest eigenvalue at least t" without one, on random symmetric matrices near I (where the fade decides).
+template <int D>
+void expect_smallest_eigenvalue_agrees() {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> entry(-0.15, 0.15);
+  int above = 0, below = 0;
+  for (int k = 0; k < 2000; ++k) {
+    Mat<D> A = Mat<D>::Identity();
+    for (int a = 0; a < D; ++a)
+      for (int b = a; b < D; ++b) A(a, b) = A(b, a) = A(a, b) + entry(rng);
+    const double exact = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>>(Eigen::Matrix<double, D, D>(A))
+                             .eigenvalues()
+                             .minCoeff();
+    ASSERT_NEAR(smallest_eigenvalue<D>(A), exact, 1e-13);
+    for (const double t : {0.90, 0.97}) {
+      if (std::abs(exact - t) < 1e-12) continue;
+      ASSERT_EQ(smallest_eigenvalue_at_least<D>(A, t), exact >= t) << "eigenvalue " << exact << ", t " << t;
+      (exact >= t ? above : below) += 1;
+    }
+  }
+  EXPECT_GT(above, 100);
+  EXPECT_GT(below, 100);
 }
+TEST(Operators, SmallestEigenvalueInClosedFormAgrees2D) { expect_smallest_eigenvalue_agrees<2>(); }
+TEST(Operators, SmallestEigenvalueInClosedFormAgrees3D) { expect_smallest_eigenvalue_agrees<3>(); }
+
+// The second moment the number density's stage takes in lanes with the weights (fluid/listed_pairs.hpp) equals the
+// pair-by-pair one (corrective_matrix.hpp) to rounding, and the weights and factors it keeps are unchanged, bit for
+// bit, by taking it: on jittered particles with a list built with a skin, 2-D and 3-D.
+template <int D>
+void expect_lane_moment_agrees() {
+  Lattice<D> L;
+  auto& P = L.particles;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.2 * L.dp, 0.2 * L.dp);
+  for (auto& x : P.position)
+    for (int c = 0; c < D; ++c) x[c] += jitter(rng);
+  const double list_radius = L.re + 0.3 * L.dp;
+  NeighborGrid<D> grid(Vec<D>::Constant(-L.dp), Vec<D>::Constant((L.side + 2) * L.dp), list_radius);
+  grid.bin(P.position);
+  NeighborList list;
+  build_neighbor_list(grid, P.position, list_radius, list);
+  std::vector<double> with(256), without(256);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    ASSERT_LE(list.count[i], with.size());
+    Mat<D> lanes;
+    const double n_with = number_density_keeping_weights<D>(i, P.position, nullptr, list, L.re, with.data(),
+                                                            PairFactor::derivative_over_r, &lanes);
+    const double n_without = number_density_keeping_weights<D>(i, P.position, nullptr, list, L.re, without.data(),
+                                                               PairFactor::derivative_over_r);
+    ASSERT_EQ(bits(n_with), bits(n_without));
+    for (std::size_t k = 0; k < list.count[i]; ++k) ASSERT_EQ(bits(with[k]), bits(without[k]));
+    const Mat<D> pairwise = kernel_second_moment<D>(i, P.position, list, L.re);
+    ASSERT_GT(pairwise.norm(), 0.0);
+    ASSERT_NEAR((lanes - pairwise).norm(), 0.0, 1e-12 * pairwise.norm()) << "particle " << i;
+  }
+}
+TEST(Operators, SecondMomentTakenInLanesAgrees2D) { expect_lane_moment_agrees<2>(); }
+TEST(Operators, SecondMomentTakenInLanesAgrees3D) { expect_lane_moment_agrees<3>(); }
+
 
 // The gradient summed pair by pair, each pair's factor computed on its own and pairs beyond re skipped.
 Vec<2> pair_by_pair_gradient(GradientModel m, std::size_t i, const Particles<2>& P, const NeighborList& nl, double re,
