@@ -17,7 +17,7 @@
 namespace slide {
 
 // The smallest eigenvalue of a symmetric matrix in closed form (2-D: the trace's half less the radius of Mohr's circle;
-// 3-D: Eigen's direct solver). Eigen's iterative solver took 16 % of a sediment step (perf, stop 30).
+// 3-D: Eigen's direct solver). Eigen's iterative solver took 16 % of a sediment step (perf, issue 29).
 template <int D>
 double smallest_eigenvalue(const Mat<D>& A) {
   if constexpr (D == 2) {
@@ -45,7 +45,9 @@ bool smallest_eigenvalue_at_least(const Mat<D>& A, double t) {
 
 // A_i's sum before its division by kappa n0, one pair at a time: sum (-W'(r_ij) / r_ij) r_ij (x) r_ij over i's
 // listed neighbours within re. The pressure stage takes the same sum in lanes with the number density
-// (fluid/listed_pairs.hpp), which made the corrected gradient's extra cost on the Rzadkiewicz slide ... (stop 31).
+// (fluid/listed_pairs.hpp). The corrected gradient's cost per particle-step on the Rzadkiewicz slide (dp 0.02, 1
+// thread, against variational): 2.6-2.9x with this sum, Eigen's eigenvalue solver and the predictor's own pass;
+// 1.15x with the lanes and the closed-form eigenvalue; 1.06-1.09x with the gradient's loop unbranched (issue 29).
 template <int D>
 Mat<D> kernel_second_moment(std::size_t i, const std::vector<Vec<D>>& x, const NeighborList& nl, double re) {
   const double re2 = re * re;
