@@ -49,6 +49,7 @@
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/pore_pressure.hpp"
+#include "fluid/viscosity.hpp"
 
 namespace slide {
 
@@ -89,7 +90,7 @@ template <int D>
 WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& nl, double re, double min_distance,
                      const Vec<D>& gravity, const PorePressureField<D>& pore = {}, double dt = 0.0) {
   const double re2 = re * re;
-  double sum_w = 0.0, rate = 0.0, stress = 0.0;
+  double sum_w = 0.0, rate = 0.0, stress = 0.0, mirrored_slip = 0.0, separation = 0.0;
   const double p_i = std::max(P.pressure[i], 0.0);
   for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q) {
     const std::uint32_t j = *q;
@@ -100,14 +101,23 @@ WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& n
     const Vec<D>& n = P.wall_normal[j];
     const double d_i = n.dot(P.position[i] - P.position[j]) - P.wall_depth[j];
     const Vec<D> du = P.velocity[i] - P.velocity[j] + dt * (gravity - P.acceleration[j]);
-    const Vec<D> du_t = du - du.dot(n) * n;
-    rate += w * du_t.norm() / std::max(d_i, min_distance);
+    const double slip = (du - du.dot(n) * n).norm();
+    rate += w * slip / std::max(d_i, min_distance);
+    mirrored_slip += w * no_slip_mirror_factor(d_i, P.wall_depth[j], min_distance) * slip;
+    separation += w * std::max(d_i + P.wall_depth[j], 0.0);
     const double d_face = std::max(d_i, 0.0);
     const double total = p_i - P.density[i] * (gravity - P.acceleration[j]).dot(n) * d_face;
     stress += w * std::max(0.0, effective_pressure(total, pore.at(P.position[i] - d_face * n)));
     sum_w += w;
   }
   if (sum_w == 0.0) return {};
+  // The rate whose Coulomb fraction makes i's wall pairs carry mu_b sigma times its share sum (d_i + d_j) W_ij of the
+  // crossing pairs' sum (above), also where d_i is clipped at min_distance in the pairs' mirror factor
+  // (fluid/viscosity.hpp): sum (1 + d_j / max(d_i, d_min)) W |du_t| / sum (d_i + d_j) W, which is |du_t| / d_i where
+  // nothing is clipped. With the clipped rate alone, the hexagonal lattice's first row along a slope (d_i = 0.465 dp,
+  // half its row spacing, under the clip at dp / 2) and a block pressed nearer the face as it chatters got more than
+  // mu_b sigma: a Coulomb block slid 17.5 % slower than the closed form at 20 degrees and 4.5 % at 35 (issue 29).
+  if (separation > 0.0) return {mirrored_slip / separation, stress / sum_w};
   return {rate / sum_w, stress / sum_w};
 }
 

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "fluid/basal_friction.hpp"
+#include "fluid/lattice.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/viscosity.hpp"
 #include "tests/cli_helpers.hpp"
@@ -156,6 +157,53 @@ TEST(BasalFriction, WallShearRateAndTheDiscreteWallStressAreExact) {
   // Per unit area of the face (the column is dp wide): -mu_b p against the slip (+x).
   std::printf("wall stress of the column %.6g Pa, Coulomb mu_b p = %.6g Pa\n", force_x / dp, mu_b * p);
   EXPECT_NEAR(force_x / dp, -mu_b * p, 1e-9 * mu_b * p);
+}
+
+// The same on the hexagonal lattice laid along a face (fluid/walls.hpp): rows of nearest spacing a, h = a sqrt(3) / 2
+// apart, the first at h / 2 = 0.465 dp in front of the face, under the pairs' clip at dp / 2 (fluid/viscosity.hpp).
+// The rows' wall pairs over one period a of the face still give the Coulomb stress mu_b p exactly: each particle
+// carries its share sum (d_i + d_j) W_ij of the crossing pairs' sum (fluid/basal_friction.hpp). With the clipped rate
+// alone the column carried about 3 % more, and a Coulomb block slid 17.5 % slower than the closed form at 20 degrees.
+TEST(BasalFriction, DiscreteWallStressIsExactOnTheHexagonalRowsAlongAFace) {
+  const double dp = 0.1, re = 2.1 * dp, rho = 2000.0, p = 1500.0, mu = 500.0, mu_b = 0.4;
+  const double a = nearest_spacing(LatticeKind::hexagonal, dp), h = row_spacing(LatticeKind::hexagonal, dp);
+  const Vec<2> gravity(0.0, -9.81), U(0.3, 0.0);
+  Particles<2> P;
+  const int nx = 30;
+  for (int k = 0; k < 3; ++k)  // lattice rows j = -1, -2, -3 continue the fluid's rows j = 0, 1, ... behind the face
+    for (int i = 0; i < nx; ++i) {
+      const double x = (i + 0.5 * ((k + 1) % 2)) * a;
+      const std::size_t j = P.add(Vec<2>(x, -(k + 0.5) * h), k == 0 ? Kind::wall : Kind::dummy, 0, rho, 0.0);
+      P.wall_normal[j] = Vec<2>(0.0, 1.0);
+      P.wall_depth[j] = (k + 0.5) * h;
+    }
+  const std::size_t first_fluid = P.size();
+  for (int r = 0; r < 4; ++r)
+    for (int i = 0; i < nx; ++i) {
+      const std::size_t j = P.add(Vec<2>((i + 0.5 * (r % 2)) * a, (r + 0.5) * h), Kind::fluid, 0, rho, mu);
+      P.velocity[j] = U;
+      P.pressure[j] = p;
+    }
+  NeighborGrid<2> grid(Vec<2>(-1.0, -1.0), Vec<2>(4.0, 1.0), re);
+  grid.bin(P.position);
+  NeighborList nl;
+  build_neighbor_list(grid, P.position, re, nl, P.size());
+  const LatticeConstants lc = lattice_constants<2>(dp, re, LatticeKind::hexagonal);
+  const ViscousWall wall{WallSlip::no_slip, 0.5 * dp};
+  ASSERT_LT(0.5 * h, wall.min_distance);  // the first row is clipped
+  double force_x = 0.0;  // per unit width, on one particle of each row (one per period a) from its wall pairs
+  for (int r = 0; r < 4; ++r) {
+    const std::size_t i = first_fluid + r * nx + 15;
+    const WallShear s = wall_shear<2>(i, P, nl, re, wall.min_distance, gravity);
+    P.wall_fraction[i] = coulomb_wall_fraction(mu, mu_b, p, s.rate);
+    Vec<2> sum = Vec<2>::Zero();
+    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
+      if (P.kind[*q] != Kind::fluid && distance_squared<2>(P.position[*q], P.position[i]) < re * re)
+        sum += viscous_pair_term<2>(i, *q, distance_squared<2>(P.position[*q], P.position[i]), P, re, wall);
+    force_x += rho * dp * dp * viscous_scale<2>(i, P, lc.n0, lc.lambda) * sum[0];
+  }
+  std::printf("hexagonal rows: wall stress of a period %.6g Pa, Coulomb mu_b p = %.6g Pa\n", force_x / a, mu_b * p);
+  EXPECT_NEAR(force_x / a, -mu_b * p, 1e-9 * mu_b * p);
 }
 
 // The sliding block. Tilted gravity, g (sin a, -cos a), on a flat floor: a slope of angle a without a rotated box on

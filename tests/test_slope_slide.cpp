@@ -146,32 +146,37 @@ TEST(SlopeSlide, FrictionlessBlockOnTheSquareLattice) {
   for (const double deg : {20.0, 35.0, 45.0}) expect_frictionless(deg, LatticeKind::square, 0.01);
 }
 
-// A Coulomb friction angle above the slope's holds the block: under half a spacing in a second (measured: 3.7 mm,
-// 0.37 dp, on the hexagonal lattice; the wall carries the drive at a slip speed of order g dt,
-// fluid/basal_friction.hpp).
+// A Coulomb friction angle above the slope's holds the block: under half a spacing in a second on the hexagonal
+// lattice. The wall carries the drive at a slip speed of order g dt (fluid/basal_friction.hpp): the block creeps.
+// Measured (20 deg, phi_b 25 deg, dp 0.01, 1 s): hexagonal 0.49 dp, square 0.77 dp, which is over the issue's half
+// spacing (0.37 and 0.66 dp before each wall particle's Coulomb share was taken from its unclipped distance to the
+// face, when the wall held the block with 3-9 % more than its friction). Left open: a stick condition that compares
+// the stress that would hold the block with mu_b sigma, rather than a trial slip.
 TEST(SlopeSlide, CoulombBlockStaysWhereItsFrictionHolds) {
   const SlopeMotion m = slide_down(20.0, LatticeKind::hexagonal, 0.01, 25.0, 1.0);
-  std::printf("20 deg, phi_b 25 deg: largest displacement in 1 s %.3g m = %.2f dp\n", m.largest, m.largest / m.dp);
+  std::printf("hexagonal lattice, 20 deg, phi_b 25 deg: largest displacement in 1 s %.3g m = %.2f dp\n", m.largest,
+              m.largest / m.dp);
   EXPECT_LT(m.largest, 0.5 * m.dp);
 }
 
-// A slope steeper than the friction angle: the block starts from rest. Before the wall's slip was the step's trial
-// slip (fluid/basal_friction.hpp), the block at rest saw a no-slip wall and did not move at all (20 deg, phi_b 15 deg:
-// 0.0 mm in 0.3 s). The closed form g (sin(beta) - tan(phi_b) cos(beta)) is met at 45 degrees only: measured -17 /
-// -2.9 / -1.9 % (hexagonal) and -10 / -3.8 / -1.5 % (square) at 20 / 35 / 45 degrees, dp 0.01. The sliding block
-// chatters on the wall's row (its base pressure swings between 0 and 2.7 times its weight's normal stress from
-// 0.07 s on, frictionless or not), and the wall holds it with some 3-9 % more than tan(phi_b) times its normal
-// stress, which weighs most where sin(beta) - tan(phi_b) cos(beta) is small. Left open (issue 29's closing note);
-// this test holds that the block slides, and at no less than half the closed form.
+// A slope steeper than the friction angle: the block starts from rest and slides at the closed form
+// g (sin(beta) - tan(phi_b) cos(beta)) within 2 % (issue 29, item 3), on both lattices at 20, 35 and 45 degrees.
+// Before the wall's slip was the step's trial slip (fluid/basal_friction.hpp), the block at rest saw a no-slip wall
+// and did not move at all (20 deg, phi_b 15 deg: 0.0 mm in 0.3 s). Before each wall particle's Coulomb share was
+// taken from its unclipped distance to the face, the wall held the block with 3-9 % more than tan(phi_b) times its
+// normal stress (the hexagonal lattice's first row lies 0.465 dp from the face, under the clip at dp / 2), which weighs
+// most where sin(beta) - tan(phi_b) cos(beta) is small: -17 / -2.9 / -1.9 % (hexagonal) and -10 / -3.8 / -1.5 %
+// (square) at 20 / 35 / 45 degrees, dp 0.01.
 TEST(SlopeSlide, CoulombBlockSlidesFromRestOnASteeperSlope) {
-  for (const double deg : {20.0, 35.0}) {
-    const SlopeMotion m = slide_down(deg, LatticeKind::hexagonal, 0.01, 15.0, 0.3);
-    const double b = deg * M_PI / 180.0, exact = g * (std::sin(b) - std::tan(15.0 * M_PI / 180.0) * std::cos(b));
-    std::printf("%.0f deg, phi_b 15 deg: %.4f m/s^2 against %.4f (%+.1f %%)\n", deg, m.acceleration, exact,
-                100.0 * (m.acceleration / exact - 1.0));
-    EXPECT_GT(m.acceleration, 0.5 * exact);
-    EXPECT_LT(m.acceleration, exact * 1.02);
-  }
+  for (const LatticeKind lattice : {LatticeKind::hexagonal, LatticeKind::square})
+    for (const double deg : {20.0, 35.0, 45.0}) {
+      const SlopeMotion m = slide_down(deg, lattice, 0.01, 15.0, 0.3);
+      const double b = deg * M_PI / 180.0, exact = g * (std::sin(b) - std::tan(15.0 * M_PI / 180.0) * std::cos(b));
+      std::printf("%s lattice, %.0f deg, phi_b 15 deg: %.4f m/s^2 against %.4f (%+.2f %%)\n",
+                  std::string(to_string(lattice)).c_str(), deg, m.acceleration, exact,
+                  100.0 * (m.acceleration / exact - 1.0));
+      EXPECT_NEAR(m.acceleration, exact, 0.02 * exact);
+    }
 }
 
 // On the hexagonal lattice the water and a slide on a slope start on the rows of the slope's wall: the water half a
