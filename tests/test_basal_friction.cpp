@@ -101,6 +101,25 @@ TEST(BasalFriction, OutOfRangeAngleNamesTheKey) {
     }
 }
 
+// Every particle's neighbours within re (the blocks below lie inside x in [-1, 4], y in [-1, 1]).
+NeighborList neighbour_list_of(const Particles<2>& P, double re) {
+  NeighborGrid<2> grid(Vec<2>(-1.0, -1.0), Vec<2>(4.0, 1.0), re);
+  grid.bin(P.position);
+  NeighborList nl;
+  build_neighbor_list(grid, P.position, re, nl, P.size());
+  return nl;
+}
+
+// The x force on fluid particle i (mass rho dp^2 per unit width) from its wall pairs of the viscous term.
+double wall_pairs_force_x(std::size_t i, const Particles<2>& P, const NeighborList& nl, double re,
+                          const ViscousWall& wall, const LatticeConstants& lc, double dp) {
+  Vec<2> sum = Vec<2>::Zero();
+  for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
+    if (P.kind[*q] != Kind::fluid && distance_squared<2>(P.position[*q], P.position[i]) < re * re)
+      sum += viscous_pair_term<2>(i, *q, distance_squared<2>(P.position[*q], P.position[i]), P, re, wall);
+  return P.density[i] * dp * dp * viscous_scale<2>(i, P, lc.n0, lc.lambda) * sum[0];
+}
+
 // A block of fluid particles on the square lattice (dp = 0.1) sliding at U = (0.3, -0.05) (a normal part too) over
 // a flat wall of three layers moving at u_b = (-0.1, 0): every particle's wall shear rate is the tangential slip
 // 0.4 m/s over its distance from the face (clipped at dp / 2), and its normal stress its pressure carried down to the
@@ -125,10 +144,7 @@ TEST(BasalFriction, WallShearRateAndTheDiscreteWallStressAreExact) {
       P.velocity[j] = U;
       P.pressure[j] = p;
     }
-  NeighborGrid<2> grid(Vec<2>(-1.0, -1.0), Vec<2>(4.0, 1.0), re);
-  grid.bin(P.position);
-  NeighborList nl;
-  build_neighbor_list(grid, P.position, re, nl, P.size());
+  const NeighborList nl = neighbour_list_of(P, re);
   const LatticeConstants lc = lattice_constants<2>(dp, re);
   const ViscousWall wall{WallSlip::no_slip, 0.5 * dp};
   // The column above the middle wall particle: rows r = 0..3 at x = 15.5 dp.
@@ -148,11 +164,7 @@ TEST(BasalFriction, WallShearRateAndTheDiscreteWallStressAreExact) {
     if (r <= 1) {
       EXPECT_LT(P.wall_fraction[i], 1.0) << "row " << r << ": the bound must act";
     }
-    Vec<2> sum = Vec<2>::Zero();
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-      if (P.kind[*q] != Kind::fluid && distance_squared<2>(P.position[*q], P.position[i]) < re * re)
-        sum += viscous_pair_term<2>(i, *q, distance_squared<2>(P.position[*q], P.position[i]), P, re, wall);
-    force_x += rho * dp * dp * viscous_scale<2>(i, P, lc.n0, lc.lambda) * sum[0];
+    force_x += wall_pairs_force_x(i, P, nl, re, wall, lc, dp);
   }
   // Per unit area of the face (the column is dp wide): -mu_b p against the slip (+x).
   std::printf("wall stress of the column %.6g Pa, Coulomb mu_b p = %.6g Pa\n", force_x / dp, mu_b * p);
@@ -184,10 +196,7 @@ TEST(BasalFriction, DiscreteWallStressIsExactOnTheHexagonalRowsAlongAFace) {
       P.velocity[j] = U;
       P.pressure[j] = p;
     }
-  NeighborGrid<2> grid(Vec<2>(-1.0, -1.0), Vec<2>(4.0, 1.0), re);
-  grid.bin(P.position);
-  NeighborList nl;
-  build_neighbor_list(grid, P.position, re, nl, P.size());
+  const NeighborList nl = neighbour_list_of(P, re);
   const LatticeConstants lc = lattice_constants<2>(dp, re, LatticeKind::hexagonal);
   const ViscousWall wall{WallSlip::no_slip, 0.5 * dp};
   ASSERT_LT(0.5 * h, wall.min_distance);  // the first row is clipped
@@ -196,11 +205,7 @@ TEST(BasalFriction, DiscreteWallStressIsExactOnTheHexagonalRowsAlongAFace) {
     const std::size_t i = first_fluid + r * nx + 15;
     const WallShear s = wall_shear<2>(i, P, nl, re, wall.min_distance, gravity);
     P.wall_fraction[i] = coulomb_wall_fraction(mu, mu_b, p, s.rate);
-    Vec<2> sum = Vec<2>::Zero();
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-      if (P.kind[*q] != Kind::fluid && distance_squared<2>(P.position[*q], P.position[i]) < re * re)
-        sum += viscous_pair_term<2>(i, *q, distance_squared<2>(P.position[*q], P.position[i]), P, re, wall);
-    force_x += rho * dp * dp * viscous_scale<2>(i, P, lc.n0, lc.lambda) * sum[0];
+    force_x += wall_pairs_force_x(i, P, nl, re, wall, lc, dp);
   }
   std::printf("hexagonal rows: wall stress of a period %.6g Pa, Coulomb mu_b p = %.6g Pa\n", force_x / a, mu_b * p);
   EXPECT_NEAR(force_x / a, -mu_b * p, 1e-9 * mu_b * p);
