@@ -667,6 +667,13 @@ void Simulation<D>::save_state(StateWriter& out) const {
   out.put(rebuilds_);
   out.put(viscous_solves_);
   out.put(last_viscous_solve_);
+  // The corrected gradient's matrices of the last pressure stage: the semi-implicit predictor reads them in the next
+  // step (predict_with_viscosity_and_gravity), so a resumed run must have them to stay bit-identical to the straight one.
+  out.put(correction_current_);
+  std::vector<double> correction;
+  correction.reserve(particles.gradient_correction.size() * D * D);
+  for (const Mat<D>& L : particles.gradient_correction) correction.insert(correction.end(), L.data(), L.data() + D * D);
+  out.put(correction);
   out.put<std::uint64_t>(left_the_domain_.size());
   for (const auto& l : left_the_domain_) {
     out.put(l.id);
@@ -689,7 +696,6 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(particles.body_frames.offset);
   in.get(particles.body_frames.normal);
   pair_weights_.forget();
-  correction_current_ = false;
   in.get(particles.ghost_source);
   in.get(particles.ghost_shift);
   particles.removed_count = in.get<std::uint64_t>();
@@ -704,6 +710,14 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(rebuilds_);
   in.get(viscous_solves_);
   in.get(last_viscous_solve_);
+  in.get(correction_current_);
+  std::vector<double> correction;
+  in.get(correction);
+  if (correction.size() % (D * D) != 0 || (correction_current_ && correction.size() != particles.size() * D * D))
+    throw std::runtime_error("the checkpoint's gradient matrices are not its particles'");
+  particles.gradient_correction.resize(correction.size() / (D * D));
+  for (std::size_t k = 0; k < particles.gradient_correction.size(); ++k)
+    std::copy_n(correction.data() + k * D * D, D * D, particles.gradient_correction[k].data());
   left_the_domain_.resize(in.get<std::uint64_t>());
   for (auto& l : left_the_domain_) {
     in.get(l.id);

@@ -185,7 +185,7 @@ class Simulation {
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
   // P.gradient_correction holds the matrices of the last pressure stage for the particles in their present order
-  // (the corrected gradient; a rebuild, which re-sorts, or a restore clears it).
+  // (the corrected gradient; a rebuild, which re-sorts, clears it; a checkpoint keeps both).
   bool correction_current_ = false;
   bool rheology_ = false;  // some phase is non-Newtonian
   bool rheology_suspended_ = false;
