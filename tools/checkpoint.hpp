@@ -15,8 +15,14 @@
 
 namespace slide::tools {
 
+// What a checkpoint's header names as its writer: slide's version and the format of the simulation's saved state. The
+// format's number changes with the state it holds (2: the corrected gradient's matrices, issue 29), so that a
+// checkpoint of another format is refused as such rather than misread (a format-1 checkpoint was refused as "the
+// checkpoint's bodies are not the scene's").
+inline std::string checkpoint_writer() { return std::string(SLIDE_VERSION) + ", state format 2"; }
+
 struct CheckpointHeader {
-  std::string version;         // SLIDE_VERSION of the program that wrote it
+  std::string version;         // checkpoint_writer() of the program that wrote it
   std::string scene_file;      // as given to slide run
   std::vector<std::string> overrides;  // --set, in order
   std::string resolved_scene;  // the scene with every default filled in, as YAML: what the state belongs to

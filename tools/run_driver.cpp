@@ -245,7 +245,8 @@ std::optional<PreparedRun> prepare_new_run(const RunArguments& args) {
   }
   run.scene = build_or_report(args, *resolved);
   if (!run.scene) return std::nullopt;
-  run.header = {SLIDE_VERSION, std::filesystem::absolute(args.scene).string(), args.overrides, YAML::Dump(*resolved)};
+  run.header = {checkpoint_writer(), std::filesystem::absolute(args.scene).string(), args.overrides,
+                YAML::Dump(*resolved)};
   return run;
 }
 
@@ -274,10 +275,11 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
     return std::nullopt;
   }
   const CheckpointHeader& h = run.resumed_from->header;
-  if (h.version != SLIDE_VERSION) {
+  if (h.version != checkpoint_writer()) {
     std::cerr << fmt::format("slide: --resume {}: the checkpoint was written by slide {} and this is slide {}: its "
-                             "state is not this version's; resume it with slide {} or run the scene again\n",
-                             args.resume.string(), h.version, SLIDE_VERSION, h.version);
+                             "state is not this version's; resume it with the slide that wrote it or run the scene "
+                             "again\n",
+                             args.resume.string(), h.version, checkpoint_writer());
     return std::nullopt;
   }
   if (args.scene.empty() && !args.overrides.empty()) {
