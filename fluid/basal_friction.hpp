@@ -114,9 +114,10 @@ WallShear wall_shear(std::size_t i, const Particles<D>& P, const NeighborList& n
   // The rate whose Coulomb fraction makes i's wall pairs carry mu_b sigma times its share sum (d_i + d_j) W_ij of the
   // crossing pairs' sum (above), also where d_i is clipped at min_distance in the pairs' mirror factor
   // (fluid/viscosity.hpp): sum (1 + d_j / max(d_i, d_min)) W |du_t| / sum max(d_i + d_j, d_min) W, which is
-  // |du_t| / d_i where nothing is clipped. With the clipped rate alone, the hexagonal lattice's first row along a slope (d_i = 0.465 dp,
-  // half its row spacing, under the clip at dp / 2) and a block pressed nearer the face as it chatters got more than
-  // mu_b sigma: a Coulomb block slid 17.5 % slower than the closed form at 20 degrees and 4.5 % at 35 (issue 29).
+  // |du_t| / d_i where nothing is clipped. With the clipped rate alone, the hexagonal lattice's first row along a
+  // slope (d_i = 0.465 dp, half its row spacing, under the clip at dp / 2) and a block pressed nearer the face as it
+  // chatters got more than mu_b sigma: a Coulomb block slid 17.5 % slower than the closed form at 20 degrees and 4.5 %
+  // at 35 (issue 29). The plain rate remains for a wall without a clip distance (min_distance 0) touched at a layer.
   if (separation > 0.0) return {mirrored_slip / separation, stress / sum_w};
   return {rate / sum_w, stress / sum_w};
 }
