@@ -668,7 +668,7 @@ void Simulation<D>::save_state(StateWriter& out) const {
   out.put(viscous_solves_);
   out.put(last_viscous_solve_);
   // The corrected gradient's matrices of the last pressure stage: the semi-implicit predictor reads them in the next
-  // step (predict_with_viscosity_and_gravity), so a resumed run must have them to stay bit-identical to the straight one.
+  // step (predict_with_viscosity_and_gravity), so a resumed run needs them to stay bit-identical to the straight one.
   out.put(correction_current_);
   std::vector<double> correction;
   correction.reserve(particles.gradient_correction.size() * D * D);
