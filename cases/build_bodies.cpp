@@ -260,7 +260,7 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
   if (!(density > 0.0))
     throw SceneError(path + ".density", "a deformable slide needs its density (mass is for rigid bodies)");
   const std::string name = bn["name"].as<std::string>();
-  const Rheology rheology = read_rheology(model, bn["rheology"]);
+  const Rheology rheology = read_rheology(model, bn["rheology"], path + ".rheology");
   const std::size_t phase =
       b.phases.add(name, density, rheology, basal_friction_coefficient(bn["basal_friction_angle"].as<double>()),
                    path + ".name");

@@ -30,7 +30,8 @@ ScenePhases read_phases(const YAML::Node& list) {
   ScenePhases out;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const auto ph = list[k];
-    out.add(ph["name"].as<std::string>(), ph["density"].as<double>(), read_rheology(ph["rheology"]),
+    out.add(ph["name"].as<std::string>(), ph["density"].as<double>(),
+            read_rheology(ph["rheology"], fmt::format("fluid.phases[{}].rheology", k)),
             basal_friction_coefficient(ph["basal_friction_angle"].as<double>()), fmt::format("fluid.phases[{}].name", k));
   }
   return out;

@@ -8,15 +8,16 @@
 
 #include "cases/duplicate_keys.hpp"
 #include "cases/scene.hpp"
+#include "cases/yaml_text.hpp"
 
 namespace slide::cases {
 
 YAML::Node load_scene_text(const std::string& text, const std::vector<std::string>& overrides) {
   YAML::Node raw;
   try {
-    raw = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
+    raw = load_yaml_text(text);
+  } catch (const YamlTextRefused& e) {
+    throw SceneError("<file>", e.what());
   }
   if (!raw.IsMap()) throw SceneError("<root>", "a scene file must be a YAML mapping");
   if (const auto d = find_duplicate_key(raw)) throw SceneError(d->path, duplicate_key_message(*d));

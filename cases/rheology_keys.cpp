@@ -70,7 +70,7 @@ Schema rheology_schema() {
                     "newtonian");
 }
 
-Rheology read_rheology(RheologyModel model, const YAML::Node& r) {
+Rheology read_rheology(RheologyModel model, const YAML::Node& r, const std::string& path) {
   switch (model) {
     case RheologyModel::newtonian: return Newtonian{r["viscosity"].as<double>()};
     case RheologyModel::herschel_bulkley:
@@ -81,6 +81,11 @@ Rheology read_rheology(RheologyModel model, const YAML::Node& r) {
                          r["consistency"].as<double>(),   r["flow_index"].as<double>(),
                          read_regularisation(r),          r["max_power_law_viscosity"].as<double>()};
     case RheologyModel::granular:
+      // mu(I) rises from mu_s at rest to mu_2 as I grows; mu_2 < mu_s would make faster flow weaker.
+      if (r["mu_2"].as<double>() < r["mu_s"].as<double>())
+        throw SceneError(path + ".mu_2", "is " + r["mu_2"].as<std::string>() + ", below mu_s (" +
+                                             r["mu_s"].as<std::string>() +
+                                             "): mu(I) rises from mu_s at rest to mu_2, so mu_2 >= mu_s");
       return GranularMuI{r["mu_s"].as<double>(),           r["mu_2"].as<double>(),
                          r["i0"].as<double>(),             r["grain_diameter"].as<double>(),
                          r["grain_density"].as<double>(),  r["max_viscosity"].as<double>(),
@@ -89,8 +94,8 @@ Rheology read_rheology(RheologyModel model, const YAML::Node& r) {
   throw std::logic_error("unknown rheology model");
 }
 
-Rheology read_rheology(const YAML::Node& r) {
-  return read_rheology(rheology_model_names.parse(r["model"].as<std::string>()), r);
+Rheology read_rheology(const YAML::Node& r, const std::string& path) {
+  return read_rheology(rheology_model_names.parse(r["model"].as<std::string>()), r, path);
 }
 
 Schema rheology_parameters_schema() {

@@ -25,12 +25,13 @@ inline constexpr auto regularisation_names = make_name_table<RegularisationKind>
 // The variant keyed by `model` (default newtonian), each model with its own keys (fluid/rheology/*.hpp).
 Schema rheology_schema();
 
-// A resolved `rheology` node as the model it names.
-Rheology read_rheology(const YAML::Node& resolved);
+// A resolved `rheology` node (at key path `path`) as the model it names. Throws SceneError on parameters the law
+// cannot take together (mu(I) needs mu_2 >= mu_s).
+Rheology read_rheology(const YAML::Node& resolved, const std::string& path);
 
 // Every model's keys in one map with defaults (a deformable slide's `rheology`: its model is named by the slide's
 // own `model` key, so that switching the model is one key and the parameters stay in the scene).
 Schema rheology_parameters_schema();
-Rheology read_rheology(RheologyModel model, const YAML::Node& resolved_parameters);
+Rheology read_rheology(RheologyModel model, const YAML::Node& resolved_parameters, const std::string& path);
 
 }  // namespace slide::cases

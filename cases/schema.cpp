@@ -1,6 +1,7 @@
 #include "cases/schema.hpp"
 
 #include "cases/duplicate_keys.hpp"
+#include "cases/yaml_text.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -680,9 +681,9 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
 
   YAML::Node value;
   try {
-    value = YAML::Load(assignment.substr(eq + 1));
-  } catch (const YAML::Exception& e) {
-    bad_override(assignment, std::string("cannot parse the value as YAML: ") + e.msg);
+    value = load_yaml_text(assignment.substr(eq + 1));
+  } catch (const YamlTextRefused& e) {
+    bad_override(assignment, std::string("cannot read the value as YAML: ") + e.what());
   }
   if (const auto d = find_duplicate_key(value)) bad_override(assignment, "key " + d->path + " " + duplicate_key_message(*d));
 

@@ -142,3 +142,67 @@ method: {initial_state: settled, settling_time: 1.5}
 
 }  // namespace
 }  // namespace slide::testing
+namespace slide::testing {
+namespace {
+
+// Issue 30's smaller ones: each exits 2 naming the option or key, and nothing is written.
+TEST(BadInput, FoldersThatAreNotASweepsAreRefused) {
+  const fs::path dir = fresh_directory("bad_sweep_folders");
+  write_file(dir / "scene.yaml", kGoodScene);
+  write_file(dir / "sweep.yaml", "scene: scene.yaml\nvary: {end_time: [0.01, 0.02]}\n");
+  write_file(dir / "afile", "x\n");
+  fs::create_directories(dir / "empty");
+  fs::create_directories(dir / "broken");
+  write_file(dir / "broken" / "plan.json", "{");
+  const auto before = listing(dir);
+  const std::string sweep = slide_binary() + " sweep ";
+  expect_refused(run_command(sweep + (dir / "sweep.yaml").string() + " --plan-only --out " + (dir / "afile").string()),
+                 {"--out", "afile", "is a file, not a folder"});
+  expect_refused(run_command(sweep + "--collect " + (dir / "missing").string()), {"--collect", "does not exist"});
+  expect_refused(run_command(sweep + "--collect " + (dir / "afile").string()), {"--collect", "is not a folder"});
+  expect_refused(run_command(sweep + "--collect " + (dir / "empty").string()),
+                 {"--collect", "is not a sweep folder: it has no plan.json"});
+  expect_refused(run_command(sweep + "--collect " + (dir / "broken").string()), {"--collect", "plan.json", "parse"});
+  EXPECT_EQ(listing(dir), before);
+}
+
+TEST(BadInput, StopAtThatIsNotATimeIsRefused) {
+  const fs::path dir = fresh_directory("bad_stop_at");
+  write_file(dir / "scene.yaml", kGoodScene);
+  for (const char* t : {"nan", "-1", "soon"})
+    expect_refused(run_command(slide_binary() + " run " + (dir / "scene.yaml").string() + " --quiet --out " +
+                               (dir / "out").string() + " --stop-at " + t),
+                   {"--stop-at", "must be a time >= 0 s"});
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// A combination given twice would run twice; a grid of 10^7 runs is refused from its lists' lengths at once (it
+// spent hours being checked run by run), unless max_runs is raised.
+TEST(BadInput, SweepsThatRepeatARunOrExceedMaxRunsAreRefused) {
+  const fs::path dir = fresh_directory("bad_sweep_runs");
+  write_file(dir / "scene.yaml", kGoodScene);
+  const auto plan = [&](const std::string& name, const std::string& text) {
+    write_file(dir / name, "scene: scene.yaml\n" + text);
+    return run_command(slide_binary() + " sweep " + (dir / name).string() + " --plan-only --out " +
+                       (dir / ("out_" + name)).string());
+  };
+  expect_refused(plan("grid.yaml", "vary: {end_time: [0.01, 0.02, 0.01]}\n"),
+                 {"vary.end_time: value 0.01 appears twice"});
+  expect_refused(plan("list.yaml", "combinations: [{end_time: 0.01}, {end_time: 0.02}, {end_time: 0.01}]\n"),
+                 {"combinations[2]: is combinations[0] again"});
+  std::string huge = "vary:\n";
+  for (int k = 0; k < 7; ++k)
+    huge += "  " + std::string(k < 1 ? "end_time" : "particle_spacing") + (k < 2 ? "" : std::to_string(k)) +
+            ": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n";
+  expect_refused(plan("huge.yaml", huge), {"vary: stands for 10000000 runs, more than max_runs (1000)"});
+  expect_refused(plan("two.yaml", "max_runs: 1\nvary: {end_time: [0.01, 0.02]}\n"),
+                 {"vary: stands for 2 runs, more than max_runs (1)"});
+  expect_refused(plan("zero.yaml", "max_runs: 0\nvary: {end_time: [0.01]}\n"), {"max_runs: must be a whole number"});
+  const auto raised = plan("raised.yaml", "max_runs: 2\nvary: {end_time: [0.01, 0.02]}\n");
+  EXPECT_EQ(raised.exit_code, 0) << raised.output;
+  for (const char* refused : {"grid", "list", "huge", "two", "zero"})
+    EXPECT_FALSE(fs::exists(dir / (std::string("out_") + refused + ".yaml")));
+}
+
+}  // namespace
+}  // namespace slide::testing

@@ -6,7 +6,7 @@
 namespace slide::cases {
 namespace {
 
-Rheology read(const std::string& yaml) { return read_rheology(rheology_schema().resolve(YAML::Load(yaml))); }
+Rheology read(const std::string& yaml) { return read_rheology(rheology_schema().resolve(YAML::Load(yaml)), "rheology"); }
 
 TEST(RheologyKeys, EachModelReadsIntoItsType) {
   EXPECT_EQ(std::get<Newtonian>(read("{}")).viscosity_pa_s, 1e-3);
@@ -68,14 +68,28 @@ TEST(RheologyKeys, ModelNamesMatchTheRheologyTypes) {
 TEST(RheologyKeys, FlatParametersServeEveryModel) {
   const YAML::Node p = rheology_parameters_schema().resolve(
       YAML::Load("{yield_stress: 200, consistency: 3, friction_angle: 35, mu_s: 0.5}"));
-  const auto hb = std::get<HerschelBulkley>(read_rheology(RheologyModel::herschel_bulkley, p));
+  const auto hb = std::get<HerschelBulkley>(read_rheology(RheologyModel::herschel_bulkley, p, "rheology"));
   EXPECT_EQ(hb.yield_stress_pa, 200.0);
   EXPECT_EQ(hb.consistency_pa_s_n, 3.0);
-  const auto mc = std::get<MohrCoulomb>(read_rheology(RheologyModel::mohr_coulomb, p));
+  const auto mc = std::get<MohrCoulomb>(read_rheology(RheologyModel::mohr_coulomb, p, "rheology"));
   EXPECT_EQ(mc.friction_angle_deg, 35.0);
-  EXPECT_EQ(std::get<GranularMuI>(read_rheology(RheologyModel::granular, p)).mu_s, 0.5);
-  EXPECT_EQ(std::get<Newtonian>(read_rheology(RheologyModel::newtonian, p)).viscosity_pa_s, 1e-3);
+  EXPECT_EQ(std::get<GranularMuI>(read_rheology(RheologyModel::granular, p, "rheology")).mu_s, 0.5);
+  EXPECT_EQ(std::get<Newtonian>(read_rheology(RheologyModel::newtonian, p, "rheology")).viscosity_pa_s, 1e-3);
   EXPECT_THROW(rheology_parameters_schema().resolve(YAML::Load("{yeld_stress: 1}")), SceneError);
+}
+
+
+// mu(I) rises from mu_s to mu_2: mu_2 below mu_s is refused naming the key (issue 30); equal is a constant mu.
+TEST(RheologyKeys, GranularMuTwoBelowMuSIsRefusedNamingIt) {
+  EXPECT_EQ(std::get<GranularMuI>(read("{model: granular, mu_s: 0.4, mu_2: 0.4}")).mu_2, 0.4);
+  try {
+    read_rheology(rheology_schema().resolve(YAML::Load("{model: granular, mu_s: 0.5, mu_2: 0.3}")),
+                  "bodies[0].rheology");
+    FAIL() << "mu_2 < mu_s accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies[0].rheology.mu_2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("below mu_s (0.5)"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 
 #include "cases/check_report.hpp"
 #include "cases/scene.hpp"
+#include "cases/yaml_text.hpp"
 #include "coupling/free_surface_gauge.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/surge_front.hpp"
@@ -300,8 +301,12 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
     }
   }
   try {
-    run.scene = cases::build_scene(YAML::Load(h.resolved_scene), scene_file.stem().string(),
+    run.scene = cases::build_scene(cases::load_yaml_text(h.resolved_scene), scene_file.stem().string(),
                                    scene_file.parent_path().empty() ? "." : scene_file.parent_path(), true);
+  } catch (const cases::YamlTextRefused& e) {
+    std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
+              << "\n";
+    return std::nullopt;
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
               << "\n";

@@ -1,6 +1,7 @@
 // slide: landslide-generated waves with weakly compressible MPS. See README.md and cases/SCHEMA.md.
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
 #include <iostream>
 
 #include "cases/scene.hpp"
@@ -24,7 +25,15 @@ int run_main(int argc, char** argv) {
   resume->excludes(out_option);
   run->add_option("--stop-at", args.stop_at,
                   "stop at this simulated time (s) with a checkpoint and a final snapshot, exit 0; --resume continues")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            // CLI::NonNegativeNumber lets nan through (every comparison with it is false): it would stop at t = 0.
+            char* end = nullptr;
+            const double t = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(t >= 0.0)) return "must be a time >= 0 s, not " + text;
+            return "";
+          },
+          "TIME >= 0"));
   run->add_option("--set", args.overrides, "override a scene key: key.path=value (repeatable)");
   run->add_option("--threads", args.threads, "number of threads (default: all)")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", args.quiet, "no progress line");

@@ -18,6 +18,7 @@
 
 #include "cases/schema.hpp"
 #include "tools/atomic_file.hpp"
+#include "tools/output_folder.hpp"
 #include "tools/plot_scripts.hpp"
 #include "tools/sweep/sweep_plan.hpp"
 #include "tools/sweep/sweep_results.hpp"
@@ -161,16 +162,36 @@ int collect(const Sweep& s, const std::filesystem::path& dir) {
   return 0;
 }
 
+// `--collect DIR`: a folder that is not a sweep's, or a plan.json that cannot be read, is bad input (exit 2).
+int collect_folder(const std::filesystem::path& dir) {
+  if (const auto why = sweep_folder_problem(dir)) {
+    std::cerr << "slide sweep: --collect " << dir.string() << ": " << *why << "\n";
+    return 2;
+  }
+  Sweep s;
+  try {
+    s = read_plan(dir);
+  } catch (const std::runtime_error& e) {
+    std::cerr << "slide sweep: --collect " << dir.string() << ": " << e.what() << "\n";
+    return 2;
+  }
+  return collect(s, dir);
+}
+
 }  // namespace
 
 int sweep_command(const SweepArguments& args) {
   try {
-    if (!args.collect.empty()) return collect(read_plan(args.collect), args.collect);
+    if (!args.collect.empty()) return collect_folder(args.collect);
     if (args.jobs < 1) throw cases::SceneError("--jobs", "must be at least 1");
     const Sweep s = load_sweep(args.sweep_file);
     const std::filesystem::path dir = args.out.empty() ? std::filesystem::path("runs") / s.name : args.out;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const int threads = std::max(1, int(cores) / args.jobs);
+    if (const auto why = output_folder_problem(dir)) {
+      std::cerr << "slide sweep: --out " << dir.string() << ": " << *why << "; nothing was run or written\n";
+      return 2;
+    }
     std::filesystem::create_directories(dir / "logs");
     std::filesystem::create_directories(dir / "runs");
     write_plan(s, dir);

@@ -5,10 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 #include "cases/duplicate_keys.hpp"
 #include "cases/scene.hpp"
 #include "cases/schema.hpp"
+#include "cases/yaml_text.hpp"
 
 namespace slide::tools {
 namespace {
@@ -24,16 +29,20 @@ std::string yaml_text(const YAML::Node& v) {
 }
 
 YAML::Node load_yaml(const std::filesystem::path& file) {
-  try {
-    const YAML::Node root = YAML::LoadFile(file.string());
-    if (!root.IsMap()) throw SceneError("<root>", "a sweep file must be a YAML mapping");
-    if (const auto d = cases::find_duplicate_key(root)) throw SceneError(d->path, cases::duplicate_key_message(*d));
-    return root;
-  } catch (const YAML::BadFile&) {
+  std::ifstream in(file, std::ios::binary);
+  if (!std::filesystem::is_regular_file(file) || !in)
     throw SceneError("<file>", "cannot read sweep file " + file.string());
-  } catch (const YAML::Exception& e) {
-    throw SceneError("<file>", "not valid YAML: " + std::string(e.what()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  YAML::Node root;
+  try {
+    root = cases::load_yaml_text(text.str());
+  } catch (const cases::YamlTextRefused& e) {
+    throw SceneError("<file>", e.what());
   }
+  if (!root.IsMap()) throw SceneError("<root>", "a sweep file must be a YAML mapping");
+  if (const auto d = cases::find_duplicate_key(root)) throw SceneError(d->path, cases::duplicate_key_message(*d));
+  return root;
 }
 
 // A scalar's text, or a SceneError naming the key.
@@ -56,9 +65,21 @@ std::vector<std::string> assignments(const YAML::Node& map, const std::string& w
   return out;
 }
 
-// The full grid over `vary`, the first key varying slowest.
-void expand_grid(const YAML::Node& vary, Sweep& s) {
+void refuse_too_many_runs(std::size_t runs, std::size_t max_runs, const std::string& key) {
+  if (runs > max_runs)
+    throw SceneError(key, fmt::format("stands for {}{} runs, more than max_runs ({}); raise max_runs if you mean it",
+                                      runs == SIZE_MAX ? "over " : "", runs == SIZE_MAX ? SIZE_MAX : runs, max_runs));
+}
+
+// The full grid over `vary`, the first key varying slowest; its size is checked before it is built.
+void expand_grid(const YAML::Node& vary, std::size_t max_runs, Sweep& s) {
   if (!vary.IsMap() || vary.size() == 0) throw SceneError("vary", "must be a non-empty map of scene keys to lists");
+  std::size_t runs = 1;  // saturates at SIZE_MAX
+  for (const auto& kv : vary) {
+    const std::size_t n = kv.second.IsSequence() ? kv.second.size() : 1;
+    runs = n != 0 && runs > SIZE_MAX / n ? SIZE_MAX : runs * n;
+  }
+  refuse_too_many_runs(runs, max_runs, "vary");
   std::vector<std::vector<std::string>> values;
   for (const auto& kv : vary) {
     const std::string key = kv.first.as<std::string>();
@@ -66,7 +87,12 @@ void expand_grid(const YAML::Node& vary, Sweep& s) {
       throw SceneError("vary." + key, "must be a non-empty list of values");
     s.varied_keys.push_back(key);
     values.emplace_back();
-    for (const auto& v : kv.second) values.back().push_back(yaml_text(v));
+    for (const auto& v : kv.second) {
+      const std::string value = yaml_text(v);
+      if (std::find(values.back().begin(), values.back().end(), value) != values.back().end())
+        throw SceneError("vary." + key, fmt::format("value {} appears twice: its runs would run twice; keep one", value));
+      values.back().push_back(value);
+    }
   }
   std::vector<std::size_t> index(values.size(), 0);
   while (true) {
@@ -81,9 +107,10 @@ void expand_grid(const YAML::Node& vary, Sweep& s) {
 
 // One run per entry of `combinations`; the varied keys are the union of their keys, in order of first appearance;
 // a run that does not name a key keeps the base scene's value (an empty cell).
-void expand_list(const YAML::Node& list, Sweep& s) {
+void expand_list(const YAML::Node& list, std::size_t max_runs, Sweep& s) {
   if (!list.IsSequence() || list.size() == 0)
     throw SceneError("combinations", "must be a non-empty list of maps of scene keys to values");
+  refuse_too_many_runs(list.size(), max_runs, "combinations");
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (!list[i].IsMap()) throw SceneError(fmt::format("combinations[{}]", i), "must be a map of scene keys to values");
     for (const auto& kv : list[i]) {
@@ -92,11 +119,31 @@ void expand_list(const YAML::Node& list, Sweep& s) {
         s.varied_keys.push_back(key);
     }
   }
+  std::map<std::vector<std::string>, std::size_t> seen;  // each combination's values -> its index
   for (std::size_t i = 0; i < list.size(); ++i) {
     SweepRun r;
     for (const auto& key : s.varied_keys) r.values.push_back(list[i][key] ? yaml_text(list[i][key]) : "");
+    if (const auto [it, added] = seen.emplace(r.values, i); !added)
+      throw SceneError(fmt::format("combinations[{}]", i),
+                       fmt::format("is combinations[{}] again: it would run twice; keep one", it->second));
     s.runs.push_back(std::move(r));
   }
+}
+
+// `max_runs`: a whole number >= 1 (default 1000).
+std::size_t read_max_runs(const YAML::Node& n) {
+  if (!n) return 1000;
+  const std::string value = text(n, "max_runs");
+  std::size_t used = 0;
+  unsigned long long runs = 0;
+  try {
+    runs = std::stoull(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || value.empty() || value[0] == '-' || runs < 1)
+    throw SceneError("max_runs", "must be a whole number of runs >= 1, not " + value);
+  return static_cast<std::size_t>(runs);
 }
 
 ErrorSpec read_error(const YAML::Node& e, const std::filesystem::path& file) {
@@ -199,9 +246,10 @@ static Sweep read_sweep(const std::filesystem::path& file) {
   for (const auto& kv : root) {
     const std::string k = kv.first.as<std::string>();
     if (k != "scene" && k != "set" && k != "vary" && k != "combinations" && k != "error" && k != "description" &&
-        k != "plots")
-      throw SceneError(k, "unknown key (known: description, scene, set, vary, combinations, error, plots)");
+        k != "plots" && k != "max_runs")
+      throw SceneError(k, "unknown key (known: description, scene, set, vary, combinations, error, plots, max_runs)");
   }
+  const std::size_t max_runs = read_max_runs(root["max_runs"]);
   Sweep s;
   s.name = file.stem().string();
   if (!root["scene"]) throw SceneError("scene", "required: the base scene file");
@@ -209,8 +257,8 @@ static Sweep read_sweep(const std::filesystem::path& file) {
   const std::vector<std::string> fixed = assignments(root["set"], "set");
   if (root["vary"].IsDefined() == root["combinations"].IsDefined())
     throw SceneError("vary", "give exactly one of vary (a full grid) and combinations (a list of runs)");
-  if (root["vary"]) expand_grid(root["vary"], s);
-  else expand_list(root["combinations"], s);
+  if (root["vary"]) expand_grid(root["vary"], max_runs, s);
+  else expand_list(root["combinations"], max_runs, s);
   s.error = read_error(root["error"], file);
   s.plots = read_plots(root["plots"], s.varied_keys);
   check_resolution_key(s);

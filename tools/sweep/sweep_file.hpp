@@ -14,6 +14,7 @@
 //     threshold: 0.10                  # a completed run whose error exceeds it is `inaccurate`
 //     T_max: 3                         # dam_break_front: compared over 0 < T <= T_max (default 3)
 //     from_time: 0.5                   # floating_draft: the draft's time mean starts here, s (default 0)
+//   max_runs: 1000                     # a sweep of more runs is refused before any is checked (default 1000)
 //   plots:                             # what tools/plot_sweep.py draws (optional)
 //     resolution_key: particle_spacing # the chart's series are the other varied keys
 //     map: {x: particle_spacing, y: method.gradient, panels: method.wall_pressure}   # default: the first three;
@@ -21,7 +22,8 @@
 //
 // Keys are scene key paths as `--set` takes them; values are YAML (a number, a name, a list). Every run's scene is
 // checked against the schema before anything runs: a bad sweep file, key or value is a SceneError (exit 2) naming the
-// key. A combination that passes the schema but that the scene builder refuses (the mirror wall model on the
+// key. So is a sweep of more than max_runs runs (checked from the lists' lengths first: a grid of 10^7 runs would
+// spend hours being checked) and a combination given twice. A combination that passes the schema but that the scene builder refuses (the mirror wall model on the
 // hexagonal lattice) runs, exits 2 by itself, and is `invalid` in the results.
 #include <filesystem>
 #include <string>

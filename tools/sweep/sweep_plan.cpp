@@ -30,6 +30,15 @@ void write_plan(const Sweep& s, const std::filesystem::path& dir) {
   write_file_atomically(dir / "plan.json", j.dump(2) + "\n");
 }
 
+std::optional<std::string> sweep_folder_problem(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(dir, ec)) return "does not exist";
+  if (!std::filesystem::is_directory(dir, ec)) return "is not a folder";
+  if (!std::filesystem::is_regular_file(dir / "plan.json", ec))
+    return "is not a sweep folder: it has no plan.json (slide sweep SWEEP.yaml writes one)";
+  return std::nullopt;
+}
+
 Sweep read_plan(const std::filesystem::path& dir) {
   std::ifstream in(dir / "plan.json");
   if (!in) throw std::runtime_error("no plan.json in " + dir.string() + " (made by slide sweep)");

@@ -3,6 +3,8 @@
 // jobs.txt (one shell command per run, for xargs -d '\n' -P, GNU parallel or a cluster's job array) and runs/<name>/ (each
 // run's own folder).
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string>
 
 #include "tools/sweep/sweep_file.hpp"
@@ -12,6 +14,9 @@ namespace slide::tools {
 void write_plan(const Sweep& sweep, const std::filesystem::path& dir);
 // std::runtime_error when DIR holds no readable plan.json.
 Sweep read_plan(const std::filesystem::path& dir);
+
+// Why `dir` is not a sweep folder that read_plan can read (missing, not a folder, no plan.json), or nothing.
+std::optional<std::string> sweep_folder_problem(const std::filesystem::path& dir);
 
 // The command that makes one run, its arguments quoted for a POSIX shell.
 std::string run_command_line(const std::filesystem::path& program, const Sweep& sweep, const SweepRun& run,
