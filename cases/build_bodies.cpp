@@ -339,6 +339,14 @@ void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, Sl
   const std::optional<FaceSegment> face = resting_face(b.faces, slide.outline, b.dp, down);
   const Rheology rheology = b.phases.phases[slide.phase].rheology;
   warn_if_rigid_at_rest(b, slide, rheology, rep);
+  if (g > 0.0 && weight_density(b, slide, rep.density) < 0.0) {
+    rep.floats_warning = fmt::format(
+        "{}: its density ({:.4g} kg/m^3) is below the water's ({:.4g} kg/m^3) and it starts under water: it floats "
+        "up rather than slides (the model carries it up as a light phase, as it would oil)",
+        rep.key, rep.density, b.phases.phases[0].density);
+    rep.criterion = "lighter than the water it starts in: it floats up; no yield criterion at rest";
+    return;
+  }
   if (!face || g == 0.0) {
     rep.criterion = "rests on no wall face: no yield criterion at rest";
     return;

@@ -139,6 +139,8 @@ std::string phases_and_slides(const Scene& scene) {
                        s.name, s.model, s.particles, s.area, s.density * s.area, s.mass_particles, s.criterion);
   for (const auto& s : scene.slides)
     if (!s.rigid_at_rest_warning.empty()) out += "warning: " + s.rigid_at_rest_warning + "\n";
+  for (const auto& s : scene.slides)
+    if (!s.floats_warning.empty()) out += "warning: " + s.floats_warning + "\n";
   return out;
 }
 

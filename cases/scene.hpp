@@ -101,6 +101,9 @@ struct SlideReport {
   // side, and it stays rigid until the water loads it (cases/build_bodies.cpp). slide check warns: model: rigid is
   // the cheaper model of such a slide.
   std::string rigid_at_rest_warning;
+  // Set when the slide is lighter than the water it starts in: it floats up rather than slides (slide check and
+  // slide run print it; the criterion then compares no stress, which would be negative).
+  std::string floats_warning;
   std::string key;                  // bodies[k]
 };
 

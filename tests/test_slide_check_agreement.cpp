@@ -27,6 +27,7 @@ struct LayerRun {
   std::string criterion;      // slide check's
   double largest = 0.0;       // m, largest particle displacement along the slope after t = 0
   double centre = 0.0;        // m, the centre of mass's
+  double rise = 0.0;          // m, the centre of mass's upward motion
   double dp = 0.0;
 };
 
@@ -114,7 +115,7 @@ TEST(SlideCheckAgreement, DryLayerSteeperThanPhiFlows) {
 // given rheology. Its free vertical front (9 cm) is not an infinite slope: a cohesionless front slumps to its own
 // angle of repose on any slope, so the slide that must stand has a cohesion that holds such a face (250 Pa: the
 // critical height of a vertical cut 3.83 c / (rho' g) = 10.7 cm) and "stands" is held to its centre of mass.
-LayerRun submerged_triangle(const std::string& rheology, const std::string& pore_pressure) {
+LayerRun submerged_triangle(const std::string& rheology, const std::string& pore_pressure, double density = 1915) {
   const double dp = 0.01;
   const std::string yaml = fmt::format(R"(particle_spacing: {dp}
 end_time: 0.5
@@ -125,15 +126,15 @@ walls: [{{name: slope, points: [[-0.35, 0.75622], [0.73, 0], [1.2, 0], [1.2, 0.4
 bodies:
   - name: beads
     shape: {{type: polygon, points: [[0.3187, 0.288], [0.448, 0.288], [0.448, 0.19746]]}}
-    density: 1915
+    density: {density}
     {rheology}
     front_direction: [1, 0]
 method: {{initial_state: settled, settling_time: 0.3, pore_pressure: {pore}}}
 output: {{snapshots: false}}
 )",
                                        fmt::arg("dp", dp), fmt::arg("rheology", rheology),
-                                       fmt::arg("pore", pore_pressure));
-  auto scene = build_scene_text(fmt::format("triangle_{}", pore_pressure), yaml);
+                                       fmt::arg("pore", pore_pressure), fmt::arg("density", density));
+  auto scene = build_scene_text(fmt::format("triangle_{}_{}", pore_pressure, density), yaml);
   auto& sim = *scene->simulation;
   const std::uint8_t phase = scene->slides[0].phase;
   LayerRun r = checked(*scene, dp);
@@ -141,6 +142,7 @@ output: {{snapshots: false}}
                                                                       -std::sin(35.0 * M_PI / 180.0));
   EXPECT_TRUE(run_scene(*scene, [](const Simulation<2>&) {}));
   r.centre = (centre_of_mass(sim.particles, phase) - c0).dot(down_slope);
+  r.rise = centre_of_mass(sim.particles, phase)[1] - c0[1];
   std::printf("triangle under water, pore_pressure %s: centre of mass moved %.4f m (%.2f dp) down the slope in "
               "0.5 s; slide check: %s\n",
               pore_pressure.c_str(), r.centre, r.centre / dp, r.criterion.c_str());
@@ -179,6 +181,16 @@ TEST(SlideCheckAgreement, SubmergedSlideOnTotalPressureStands) {
   const LayerRun r = submerged_triangle(beads, "none");
   EXPECT_NE(r.criterion.find("stands at rest"), std::string::npos);
   expect_agreement_of_the_centre(r);
+}
+
+// Lighter than water (800 kg/m^3, issue 30): the check compared a negative shear stress with the strength and said
+// "stands at rest", and the slide then moved. It says that the slide floats up, and it does: its centre of mass rises.
+TEST(SlideCheckAgreement, SubmergedSlideLighterThanWaterFloatsUp) {
+  const LayerRun r = submerged_triangle(beads, "hydrostatic", 800);
+  EXPECT_NE(r.criterion.find("floats up"), std::string::npos) << r.criterion;
+  EXPECT_EQ(r.criterion.find("stands"), std::string::npos) << r.criterion;
+  std::printf("lighter than water: centre of mass rose %.4f m (%.2f dp) in 0.5 s\n", r.rise, r.rise / r.dp);
+  EXPECT_GT(r.rise, 2.0 * r.dp);
 }
 
 }  // namespace

@@ -365,6 +365,8 @@ int run_command(const RunArguments& args) {
   const std::unique_ptr<cases::Scene>& scene = run->scene;
   const std::filesystem::path& out = run->out;
   auto& sim = *scene->simulation;
+  for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
+    if (!slide.floats_warning.empty()) std::cerr << "slide: warning: " << slide.floats_warning << "\n";
   std::filesystem::create_directories(out);
   // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
   std::error_code no_checkpoint;
