@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <fstream>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -43,8 +44,53 @@ class H5Handle {
   Closer closer_ = nullptr;
 };
 
+// HDF5's error stack, walked: every entry as a line for the log, and the system's own error message where an entry
+// carries one (the sec2 driver writes "errno = 28, error message = 'No space left on device'" into its description).
+struct Hdf5Stack {
+  std::string lines;
+  std::string cause;
+};
+
+herr_t add_stack_entry(unsigned n, const H5E_error2_t* e, void* data) {
+  auto& stack = *static_cast<Hdf5Stack*>(data);
+  const std::string desc = e->desc ? e->desc : "";
+  stack.lines += fmt::format("  #{:03d}: {} line {} in {}(): {}\n", n, e->file_name ? e->file_name : "?", e->line,
+                             e->func_name ? e->func_name : "?", desc);
+  const std::string marker = "error message = '";
+  if (const auto at = desc.find(marker); stack.cause.empty() && at != std::string::npos) {
+    const auto start = at + marker.size();
+    stack.cause = desc.substr(start, desc.find('\'', start) - start);
+  }
+  return 0;
+}
+
+// The run's folder for a file written in it or in its snapshots/ folder.
+std::filesystem::path run_folder_of(const std::filesystem::path& file) {
+  const std::filesystem::path dir = file.parent_path();
+  return dir.filename() == "snapshots" ? dir.parent_path() : dir;
+}
+
+// One line for the terminal: what failed, on which file, and the system's cause where HDF5 reports one. HDF5's own
+// stack (a dozen entries for one failed write) goes to hdf5_errors.log in the run's folder, where it still can.
 [[noreturn]] void fail(const std::filesystem::path& file, std::string_view what) {
-  throw std::runtime_error(fmt::format("HDF5 error writing '{}': {}", file.string(), what));
+  Hdf5Stack stack;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, add_stack_entry, &stack);
+  H5Eclear2(H5E_DEFAULT);
+  std::string log_note;
+  if (!stack.lines.empty()) {
+    const std::filesystem::path log = run_folder_of(file) / "hdf5_errors.log";
+    std::ofstream out(log, std::ios::app);
+    out << "HDF5 error writing '" << file.string() << "': " << what << "\n" << stack.lines;
+    out.flush();
+    log_note = fmt::format(" (HDF5's diagnostics: {})", log.string());
+    if (!out) {  // the same full disk: no empty log left behind
+      std::error_code ec;
+      if (std::filesystem::file_size(log, ec) == 0 && !ec) std::filesystem::remove(log, ec);
+      log_note = " (HDF5's diagnostics could not be logged)";
+    }
+  }
+  throw std::runtime_error(fmt::format("HDF5 error writing '{}': {}{}{}", file.string(), what,
+                                       stack.cause.empty() ? "" : ": " + stack.cause, log_note));
 }
 
 H5Handle check(hid_t id, H5Handle::Closer closer, const std::filesystem::path& file,
@@ -55,6 +101,19 @@ H5Handle check(hid_t id, H5Handle::Closer closer, const std::filesystem::path& f
 
 void check(herr_t rc, const std::filesystem::path& file, std::string_view what) {
   if (rc < 0) fail(file, what);
+}
+
+// Once per process, before any other HDF5 call where it can be: no automatic printing of HDF5's error stack (fail()
+// reports it), and no library shutdown at exit: HDF5 1.10.8 crashes there (H5F__close_cb, a segfault after the
+// run had reported its error) on a file whose close failed, as on a full disk. The run closes its files itself.
+void prepare_hdf5() {
+  static const bool prepared = [] {
+    H5dont_atexit();
+    H5open();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return true;
+  }();
+  (void)prepared;
 }
 
 // Removes a temporary file unless dismissed (used when a write throws midway).
@@ -173,9 +232,7 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend leg
   }
   // A new series: drop snapshot files of an earlier run so the folder matches the master file.
   if (new_series) remove_snapshot_files_from(0);
-  // HDF5 prints its error stack on failures; keep that (useful diagnostics) but make sure the
-  // library is initialised before use.
-  H5open();
+  prepare_hdf5();
 }
 
 void SnapshotWriter::remove_snapshot_files_from(size_t first) const {
