@@ -106,6 +106,16 @@ void set_domain(SceneBuild& b) {
       WallCrossing(std::move(faces), boundary_layers(opt.re_over_dp) * b.dp, opt.domain_lo, opt.domain_hi, re);
 }
 
+// The kinds of a scene's particles counted (again after gates are lifted).
+void count_particles(Scene& scene) {
+  scene.wall_count = scene.dummy_count = scene.fluid_count = 0;
+  for (const Kind k : scene.simulation->particles.kind) {
+    if (k == Kind::fluid) ++scene.fluid_count;
+    else if (k == Kind::wall) ++scene.wall_count;
+    else ++scene.dummy_count;
+  }
+}
+
 void count_particles(SceneBuild& b) {
   for (const Kind k : b.particles().kind) {
     if (k == Kind::fluid) ++b.scene->fluid_count;
@@ -122,53 +132,74 @@ void count_particles(SceneBuild& b) {
 // settles as a fluid by design (coupling/relaxation.hpp) and may slump where it lies on a slope (measured: 10 dp
 // for the Mohr-Coulomb layer on its slope in tests/test_sediment_block.cpp).
 namespace {
-void refuse_flowing_water(const SceneBuild& b) {
-  const Relaxation& s = *b.scene->settling;
-  const double limit_dp = 5.0 + 0.01 * b.scene->deepest_water / b.dp;
+void refuse_flowing_water(const Scene& scene) {
+  const Relaxation& s = *scene.settling;
+  const double dp = scene.particle_spacing;
+  const auto& phases = scene.simulation->phases;
+  const double limit_dp = 5.0 + 0.01 * scene.deepest_water / dp;
   for (std::size_t ph = 0; ph < s.largest_shift_by_phase.size(); ++ph) {
-    const double shift_dp = s.largest_shift_by_phase[ph] / b.dp;
-    if (!std::holds_alternative<Newtonian>(b.phases.phases[ph].rheology) || shift_dp <= limit_dp) continue;
+    const double shift_dp = s.largest_shift_by_phase[ph] / dp;
+    if (!std::holds_alternative<Newtonian>(phases[ph].rheology) || shift_dp <= limit_dp) continue;
     throw SceneError("method.initial_state",
                      fmt::format("the {} moved up to {:.3g} dp while it settled (water at rest moves less than "
                                  "{:.3g} dp): it is not at rest; hold it while it settles with a gate "
                                  "(walls[].gate), or start it without settling (initial_state: lattice, or "
                                  "hydrostatic with lattice: square)",
-                                 b.phases.phases[ph].name, shift_dp, limit_dp));
+                                 phases[ph].name, shift_dp, limit_dp));
   }
+}
+
+// After settling (or without it), the gates go.
+void lift_gates(Scene& scene) {
+  if (scene.pending_gate_ids.empty()) return;
+  Simulation<2>& sim = *scene.simulation;
+  Particles<2>& P = sim.particles;
+  std::vector<char> is_gate(P.id_end(), 0);
+  for (const std::uint32_t id : scene.pending_gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
+  P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });
+  scene.gate_particles = scene.pending_gate_ids.size();
+  scene.pending_gate_ids.clear();
+  count_particles(scene);
+  sim.initialise();
 }
 }  // namespace
 
-void settle(SceneBuild& b) {
+// What the settled start settles: its duration and damping, and the deformable slides held while the water settles
+// around them, like rigid ones, free along the normal of the face they rest on (coupling/relaxation.hpp).
+void plan_settling(SceneBuild& b) {
+  b.scene->particle_spacing = b.dp;
+  b.scene->pending_gate_ids = b.gate_ids;
   if (b.initial_state != InitialState::settled) return;
   const YAML::Node m = b.r["method"];
-  try {
-    // Deformable slides are held while the water settles, like rigid ones, free along the normal of the face they
-    // rest on (coupling/relaxation.hpp).
-    const Vec<2>& g = b.sim->options.gravity;
-    const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
-    std::vector<HeldPhase> slides;
-    for (const auto& s : b.slides) {
-      const auto face = resting_face(b.faces, s.outline, b.dp, down);
-      slides.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<2>(-face->inward) : down});
-    }
-    b.scene->settling =
-        relax_at_rest(*b.sim, m["settling_time"].as<double>(), m["settling_damping"].as<double>(), slides);
-  } catch (const std::runtime_error& e) {
-    throw SceneError("method.initial_state", e.what());
+  const Vec<2>& g = b.sim->options.gravity;
+  const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
+  SettlingPlan plan{m["settling_time"].as<double>(), m["settling_damping"].as<double>(), {}};
+  for (const auto& s : b.slides) {
+    const auto face = resting_face(b.faces, s.outline, b.dp, down);
+    plan.held.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<2>(-face->inward) : down});
   }
-  refuse_flowing_water(b);
+  b.scene->pending_settling = plan;
 }
 
-void lift_gates(SceneBuild& b) {
-  if (b.gate_ids.empty()) return;
-  Particles<2>& P = b.particles();
-  std::vector<char> is_gate(P.id_end(), 0);
-  for (const std::uint32_t id : b.gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
-  P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });
-  b.scene->gate_particles = b.gate_ids.size();
-  b.scene->wall_count = b.scene->dummy_count = b.scene->fluid_count = 0;
-  count_particles(b);
-  b.sim->initialise();
+void complete_start(Scene& scene, const std::optional<Relaxation>& settled) {
+  scene.pending_settling.reset();
+  if (settled) {
+    scene.settling = *settled;
+    refuse_flowing_water(scene);
+  }
+  lift_gates(scene);
+}
+
+void settle_now(Scene& scene) {
+  std::optional<Relaxation> settled;
+  if (scene.pending_settling) {
+    try {
+      settled = relax_at_rest(*scene.simulation, *scene.pending_settling);
+    } catch (const std::runtime_error& e) {
+      throw SceneError("method.initial_state", e.what());
+    }
+  }
+  complete_start(scene, settled);
 }
 
 }  // namespace slide::cases

@@ -11,7 +11,7 @@ namespace slide::cases {
 SceneBuild::SceneBuild(const YAML::Node& resolved, const std::filesystem::path& dir) : r(resolved), scene_dir(dir) {}
 
 std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name,
-                                   const std::filesystem::path& scene_dir, bool for_resume) {
+                                   const std::filesystem::path& scene_dir, StartOfRun start) {
   SceneBuild b(r, scene_dir);
   b.scene->resolved = r;
   b.scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
@@ -44,11 +44,12 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   } catch (const std::invalid_argument& e) {  // what the solver refuses: a periodic domain's set-up
     throw SceneError("domain.periodic_x", e.what());
   }
-  if (!for_resume) settle(b);
-  lift_gates(b);
-
+  plan_settling(b);
   b.scene->simulation = std::move(b.sim);
-  return std::move(b.scene);
+  std::unique_ptr<Scene> scene = std::move(b.scene);
+  if (start == StartOfRun::settle_now) settle_now(*scene);
+  else if (start == StartOfRun::already_settled) complete_start(*scene, std::nullopt);
+  return scene;
 }
 
 }  // namespace slide::cases

@@ -128,6 +128,11 @@ struct Scene {
   std::vector<double> slide_outline_times;  // s, increasing
   std::optional<SlideShapesSpec> slide_shapes;
   std::optional<Relaxation> settling;  // the settled start, when used
+  double particle_spacing = 0.0;       // m
+  // Built with StartOfRun::left_to_caller: the settling still to run (with initial_state settled) and the gates still
+  // to lift; complete_start finishes the start (build_scene does it otherwise).
+  std::optional<SettlingPlan> pending_settling;
+  std::vector<std::uint32_t> pending_gate_ids;
   double body_sample_interval = 0.0;  // s, bodies.csv rows
 };
 
@@ -142,8 +147,16 @@ YAML::Node load_scene_text(const std::string& text, const std::vector<std::strin
 // Builds particles and options from a resolved scene. Throws SceneError for geometric problems (a region that
 // holds no particle, water overlapping a wall).
 // scene_dir: where files named by the scene (prescribed motion series) are looked up.
-// for_resume: a run that continues from a checkpoint, which holds the settled state: the water is not settled again.
+// start: settle_now (with initial_state settled; then the gates are lifted), left_to_caller (slide run, which settles in
+// its own loop so that a signal can stop it: it calls complete_start after), already_settled (a run continuing from
+// a checkpoint taken after settling: the water is not settled again; the gates are lifted).
+enum class StartOfRun { settle_now, left_to_caller, already_settled };
 std::unique_ptr<Scene> build_scene(const YAML::Node& resolved, const std::string& default_name,
-                                   const std::filesystem::path& scene_dir = ".", bool for_resume = false);
+                                   const std::filesystem::path& scene_dir = ".",
+                                   StartOfRun start = StartOfRun::settle_now);
+
+// Finishes a start left to the caller: `settled` is what the settling of scene.pending_settling gave (none without
+// one); the settled water is checked at rest (SceneError naming method.initial_state) and the gates are lifted.
+void complete_start(Scene& scene, const std::optional<Relaxation>& settled);
 
 }  // namespace slide::cases

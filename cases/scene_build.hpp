@@ -104,8 +104,8 @@ void count_particles(SceneBuild& b);           // build_initial_state.cpp
 void read_outputs(SceneBuild& b);              // build_outputs.cpp
 void finish_bodies(SceneBuild& b);             // build_bodies.cpp
 void set_phases(SceneBuild& b);                // build_phases.cpp
-void settle(SceneBuild& b);                    // build_initial_state.cpp
-void lift_gates(SceneBuild& b);                // build_initial_state.cpp: after settling, the gates go
+void plan_settling(SceneBuild& b);             // build_initial_state.cpp: Scene::pending_settling
+void settle_now(Scene& scene);                 // build_initial_state.cpp: settles it, then complete_start
 
 // A body's outline from its shape, counter-clockwise in world coordinates at t = 0; it must be convex
 // (build_bodies.cpp; the walls need the first body's to move the hexagonal lattice).

@@ -26,9 +26,11 @@ namespace {
 // weight where the weight's normal part is cos(beta) of it, so the slide started pressed on the face with
 // 1 / cos^2(beta) its weight's normal stress (a block on a 45 degree face: 2400 Pa at its base against 1241 Pa), and
 // its basal friction held it with that much more at first.
-class SettlingObserver : public StepObserver<2> {
+}  // namespace
+
+class Settling::Observer : public StepObserver<2> {
  public:
-  SettlingObserver(Relaxation& out, RigidBodies* floating, const Particles<2>& P, const std::vector<HeldPhase>& held)
+  Observer(Relaxation& out, RigidBodies* floating, const Particles<2>& P, const std::vector<HeldPhase>& held)
       : out_(out), floating_(floating), held_(256, false), free_(256, Vec<2>::Zero()), start_(P.real_count()) {
     for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
     for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
@@ -54,33 +56,47 @@ class SettlingObserver : public StepObserver<2> {
   std::vector<Vec<2>> start_;  // by id
 };
 
-}  // namespace
 
-Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
-                         const std::vector<HeldPhase>& held) {
-  Relaxation out;
-  out.duration = duration;
-  out.damping_rate = damping_rate;
+Settling::Settling(Simulation<2>& sim, SettlingPlan plan) : sim_(sim) {
+  out_.duration = plan.duration;
+  out_.damping_rate = plan.damping_rate;
   const auto& P = sim.particles;
-  std::vector<Vec<2>> start(P.real_count());  // real particles (periodic ghosts come and go), by id
-  for (std::size_t i = 0; i < P.real_count(); ++i) start[P.id[i]] = P.position[i];
+  start_.resize(P.real_count());  // real particles (periodic ghosts come and go), by id
+  for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
   // bodies are detached and their particles stand still as walls.
-  const std::shared_ptr<RigidBodies> bodies = sim.detach_bodies();
-  bool floating = false;
-  if (bodies)
-    for (const auto& m : bodies->motion) floating = floating || (m.mode == BodyMotion::Mode::free && m.free_while_settling);
-  if (floating) {
-    bodies->set_settling(true);
-    sim.attach_bodies(bodies);
+  bodies_ = sim.detach_bodies();
+  if (bodies_)
+    for (const auto& m : bodies_->motion)
+      floating_ = floating_ || (m.mode == BodyMotion::Mode::free && m.free_while_settling);
+  if (floating_) {
+    bodies_->set_settling(true);
+    sim.attach_bodies(bodies_);
   }
-  const double saved_rate = sim.options.velocity_damping_rate;
-  sim.set_velocity_damping(damping_rate);
+  saved_damping_rate_ = sim.options.velocity_damping_rate;
+  sim.set_velocity_damping(plan.damping_rate);
   sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
-  SettlingObserver observer(out, floating ? bodies.get() : nullptr, P, held);
-  const AdvanceResult result = advance<2>(sim, duration, {&observer});
+  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, P, plan.held);
+}
+
+Settling::~Settling() = default;
+
+AdvanceResult Settling::advance(const std::vector<StepObserver<2>*>& observers) {
+  std::vector<StepObserver<2>*> all = observers;
+  all.push_back(observer_.get());
+  const AdvanceResult result = slide::advance<2>(sim_, out_.duration, all);
   if (result.instability)
     throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));
+  return result;
+}
+
+void Settling::save_state(StateWriter& out) const { out.put(out_.largest_speed); }
+
+void Settling::restore_state(StateReader& in) { in.get(out_.largest_speed); }
+
+Relaxation Settling::finish() {
+  auto& sim = sim_;
+  const auto& P = sim.particles;
   // Water at rest stays in the domain: what left it while settling flowed off an open edge.
   if (const auto& left = sim.left_the_domain(); !left.empty())
     throw std::runtime_error(fmt::format(
@@ -88,10 +104,11 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
         "{:.6g})): it is not at rest; hold it with a wall, or start it without settling (initial_state: lattice)",
         left.size(), left.size() == 1 ? "" : "s", left.front().id, left.front().time, left.front().position[0],
         left.front().position[1]));
+  Relaxation out = out_;
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
   for (std::size_t i = 0; i < P.real_count(); ++i) {
-    Vec<2> shift = P.position[i] - start[P.id[i]];
+    Vec<2> shift = P.position[i] - start_[P.id[i]];
     // Periodic in x: the nearest image (a particle wrapped across the period's ends has not moved a period).
     if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
     out.largest_shift = std::max(out.largest_shift, shift.norm());
@@ -99,15 +116,21 @@ Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rat
     if (out.largest_shift_by_phase.size() <= P.phase[i]) out.largest_shift_by_phase.resize(P.phase[i] + 1, 0.0);
     out.largest_shift_by_phase[P.phase[i]] = std::max(out.largest_shift_by_phase[P.phase[i]], shift.norm());
   }
-  sim.set_velocity_damping(saved_rate);
+  sim.set_velocity_damping(saved_damping_rate_);
   sim.set_rheology_suspended(false);
-  if (floating) {
-    bodies->set_settling(false);
-    bodies->take_mean_forces();  // the settling's forces are not the run's
+  if (floating_) {
+    bodies_->set_settling(false);
+    bodies_->take_mean_forces();  // the settling's forces are not the run's
   }
-  sim.attach_bodies(bodies);
+  sim.attach_bodies(bodies_);
   sim.restart_at_rest();
   return out;
+}
+
+Relaxation relax_at_rest(Simulation<2>& sim, const SettlingPlan& plan) {
+  Settling settling(sim, plan);
+  settling.advance();
+  return settling.finish();
 }
 
 }  // namespace slide

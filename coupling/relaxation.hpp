@@ -11,11 +11,14 @@
 // Bodies are left out while settling: their boundary particles stay where they are, like walls.
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "coupling/advance.hpp"
 #include "coupling/simulation.hpp"
+#include "fluid/state_stream.hpp"
 
 namespace slide {
 
@@ -61,7 +64,41 @@ struct HeldPhase {
   std::uint8_t phase = 0;
   Vec<2> free_direction = Vec<2>(0.0, -1.0);
 };
-Relaxation relax_at_rest(Simulation<2>& sim, double duration, double damping_rate,
-                         const std::vector<HeldPhase>& held = {});
+struct SettlingPlan {
+  double duration = 0.0;      // s
+  double damping_rate = 0.0;  // 1/s
+  std::vector<HeldPhase> held;
+};
+Relaxation relax_at_rest(Simulation<2>& sim, const SettlingPlan& plan);
 
+// The same in stages, so that a run can stop while it settles (a signal) and a checkpoint continue it bit for bit:
+// construct (the simulation as built: the lattice it starts from is what held slides return to), advance (it stops
+// where an observer says so), save and restore between them, finish (the checks and the clock's restart).
+class Settling {
+ public:
+  Settling(Simulation<2>& sim, SettlingPlan plan);
+  ~Settling();
+  Settling(const Settling&) = delete;
+  Settling& operator=(const Settling&) = delete;
+  // Settles until its duration or until an observer stops it; a stop returns the outcome `stopped`. Throws
+  // std::runtime_error (settling_instability_message) if it goes unstable.
+  AdvanceResult advance(const std::vector<StepObserver<2>*>& observers = {});
+  // After the whole duration: refuses water that left the domain (std::runtime_error), zeroes the velocities and
+  // restarts the clock at 0; the simulation is then as relax_at_rest leaves it.
+  Relaxation finish();
+  // What a checkpoint taken while settling holds beyond the simulation's own state: the settling's bookkeeping.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
+  double duration() const { return out_.duration; }
+
+ private:
+  class Observer;
+  Simulation<2>& sim_;
+  Relaxation out_;
+  std::vector<Vec<2>> start_;  // real particles' positions as built, by id
+  std::shared_ptr<RigidBodies> bodies_;
+  bool floating_ = false;
+  double saved_damping_rate_ = 0.0;
+  std::unique_ptr<Observer> observer_;
+};
 }  // namespace slide

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <set>
+#include <tuple>
 
 #include "tests/cli_helpers.hpp"
 #include "tools/checkpoint.hpp"
@@ -119,6 +120,59 @@ void check_signal(const std::string& name, const char* signal, int expected_exit
 
 TEST(Restart, SigtermLeavesACheckpointAndAFinalSnapshotAndExits143) { check_signal("sigterm", "TERM", 143); }
 TEST(Restart, SigintLeavesACheckpointAndAFinalSnapshotAndExits130) { check_signal("sigint", "INT", 130); }
+
+// A signal while the water settles before t = 0 (issue 30: Ctrl-C was ignored there, SIGTERM left nothing): exit
+// 128 + signal within a step, run.json `interrupted` with the settling's time, and a checkpoint from which --resume
+// settles on. Stopped twice (SIGTERM, then SIGINT in the resumed settling), the run writes the straight run's files
+// bit for bit, on another thread count. A tank whose 2 s of settling take some 5 s here: a signal 1 s after the start
+// lands in its settling (or, on a machine ten times slower, while it is built, which stops it at the settling's start).
+std::string signal_after_a_second(const std::string& command, const char* signal) {
+  const auto r = run_command("(" + command + " > /dev/null 2>&1 & pid=$!; sleep 1; kill -" + signal +
+                             " $pid; wait $pid; echo exit=$?)");
+  return r.output;
+}
+
+TEST(Restart, SignalsWhileTheWaterSettlesLeaveACheckpointThatSettlesOnBitIdentically) {
+  const auto dir = fresh_directory("restart_settling");
+  write_file(dir / "tank.yaml", R"(particle_spacing: 0.02
+end_time: 0.02
+fluid:
+  phases: [{name: water}]
+  regions: [{type: rectangle, min: [0, 0], max: [1.0, 0.5]}]
+walls:
+  - points: [[0, 0.8], [0, 0], [1.0, 0], [1.0, 0.8]]
+method: {initial_state: settled, settling_time: 2}
+output: {snapshot_interval: 0.01}
+)");
+  const std::string scene = (dir / "tank.yaml").string();
+  const auto straight = run_command(slide_run(scene + " --threads 1 --out " + (dir / "straight").string()));
+  ASSERT_EQ(straight.exit_code, 0) << straight.output;
+  const fs::path run = dir / "resumed";
+  double settled_at = -1.0;
+  for (const auto& [signal, code, command] :
+       {std::tuple{"TERM", 143, slide_run(scene + " --threads 2 --out " + run.string())},
+        std::tuple{"INT", 130, slide_binary() + " run --resume " + run.string() + " --quiet --threads 1"}}) {
+    EXPECT_NE(signal_after_a_second(command, signal).find("exit=" + std::to_string(code)), std::string::npos) << signal;
+    const auto j = nlohmann::json::parse(read_file(run / "run.json"));
+    EXPECT_EQ(j["status"], "interrupted");
+    const std::string message = j["message"];
+    EXPECT_NE(message.find(std::string("interrupted by SIG") + signal + " while the water settled"), std::string::npos)
+        << message;
+    const auto header = tools::read_checkpoint(run).header;
+    EXPECT_TRUE(header.settling);
+    EXPECT_GE(header.time, settled_at);  // the second stop is later in the settling than the first
+    EXPECT_LT(header.time, 2.0);
+    EXPECT_DOUBLE_EQ(j["settling"]["time"].get<double>(), header.time);
+    settled_at = header.time;
+  }
+  const auto resumed = run_command(slide_binary() + " run --resume " + run.string() + " --quiet --threads 2");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  const auto k = nlohmann::json::parse(read_file(run / "run.json"));
+  EXPECT_EQ(k["status"], "completed");
+  EXPECT_DOUBLE_EQ(k["resumed_from"]["settling_time"].get<double>(), settled_at);
+  expect_same_outputs(dir / "straight", run);
+  EXPECT_FALSE(fs::exists(tools::checkpoint_path(run)));  // the settling's checkpoint is not the run's to resume
+}
 
 // A stopped dam break to refuse things about.
 fs::path stopped_run(const fs::path& dir) {

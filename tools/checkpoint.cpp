@@ -13,7 +13,9 @@ namespace slide::tools {
 namespace {
 
 constexpr char kMagic[8] = {'S', 'L', 'I', 'D', 'E', 'C', 'K', 'P'};
-constexpr std::uint32_t kFormat = 3;  // 2: body particles' frames in a table of their own (stop 25); 3: slide_shapes.csv
+// 2: body particles' frames in a table of their own (stop 25); 3: slide_shapes.csv; 4: the header says whether it was
+// taken while settling (issue 30).
+constexpr std::uint32_t kFormat = 4;
 
 // FNV-1a, 64 bits: enough to tell a torn or altered file, not a guard against tampering.
 std::uint64_t fnv1a(const char* data, std::size_t n) {
@@ -40,6 +42,7 @@ void write_checkpoint(const std::filesystem::path& run_dir, const Checkpoint& c)
   w.put(c.header.resolved_scene);
   w.put(c.header.time);
   w.put(c.header.step);
+  w.put<std::uint8_t>(c.header.settling ? 1 : 0);
   w.put(c.state);
   const std::uint64_t hash = fnv1a(w.bytes().data(), w.bytes().size());
   w.put(hash);
@@ -73,6 +76,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& run_dir) {
     r.get(c.header.resolved_scene);
     r.get(c.header.time);
     r.get(c.header.step);
+    c.header.settling = r.get<std::uint8_t>() != 0;
     r.get(c.state);
     return c;
   } catch (const CheckpointError&) {

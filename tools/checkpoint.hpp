@@ -16,18 +16,22 @@
 namespace slide::tools {
 
 // What a checkpoint's header names as its writer: slide's version and the format of the simulation's saved state. The
-// format's number changes with the state it holds (2: the corrected gradient's matrices, issue 29), so that a
+// format's number changes with the state it holds (2: the corrected gradient's matrices, issue 29; 3: a checkpoint
+// can be taken while settling, issue 30), so that a
 // checkpoint of another format is refused as such rather than misread (a format-1 checkpoint was refused as "the
 // checkpoint's bodies are not the scene's").
-inline std::string checkpoint_writer() { return std::string(SLIDE_VERSION) + ", state format 2"; }
+inline std::string checkpoint_writer() { return std::string(SLIDE_VERSION) + ", state format 3"; }
 
 struct CheckpointHeader {
   std::string version;         // checkpoint_writer() of the program that wrote it
   std::string scene_file;      // as given to slide run
   std::vector<std::string> overrides;  // --set, in order
   std::string resolved_scene;  // the scene with every default filled in, as YAML: what the state belongs to
-  double time = 0.0;           // s, the run's time at the checkpoint
+  double time = 0.0;           // s, the run's time at the checkpoint (the settling's, when settling)
   long step = 0;
+  // Taken while the water settled before t = 0 (a signal stopped it there): the state is the simulation's and the
+  // settling's (coupling/relaxation.hpp, Settling), and a resumed run settles on from it, then runs.
+  bool settling = false;
 };
 
 struct Checkpoint {

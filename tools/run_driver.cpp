@@ -19,6 +19,7 @@
 #include "cases/scene.hpp"
 #include "cases/yaml_text.hpp"
 #include "coupling/free_surface_gauge.hpp"
+#include "coupling/relaxation.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/surge_front.hpp"
 #include "fluid/listed_pairs.hpp"
@@ -109,10 +110,11 @@ std::optional<YAML::Node> resolve_or_report(const RunArguments& args) {
 }
 
 // Builds the resolved scene; on a scene error prints it and returns null (the caller exits 2).
-std::unique_ptr<cases::Scene> build_or_report(const RunArguments& args, const YAML::Node& resolved) {
+std::unique_ptr<cases::Scene> build_or_report(const RunArguments& args, const YAML::Node& resolved,
+                                              cases::StartOfRun start = cases::StartOfRun::settle_now) {
   try {
     return cases::build_scene(resolved, args.scene.stem().string(),
-                              args.scene.parent_path().empty() ? "." : args.scene.parent_path());
+                              args.scene.parent_path().empty() ? "." : args.scene.parent_path(), start);
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
     return nullptr;
@@ -180,8 +182,9 @@ class LastGoodState : public StepObserver<2> {
 class ProgressLine : public StepObserver<2> {
  public:
   // Rates and the ETA count from where this loop started (a resumed run's, the checkpoint).
-  ProgressLine(Clock::time_point loop_start, double end_time, const Simulation<2>& sim)
-      : start_(loop_start), end_(end_time), start_step_(sim.step_count()), start_time_(sim.time()) {}
+  ProgressLine(Clock::time_point loop_start, double end_time, const Simulation<2>& sim, std::string label = "")
+      : start_(loop_start), end_(end_time), start_step_(sim.step_count()), start_time_(sim.time()),
+        label_(std::move(label)) {}
   void after_step(Simulation<2>& sim, double dt) override {
     if (Clock::now() < next_) return;
     next_ = Clock::now() + std::chrono::seconds(1);
@@ -189,8 +192,8 @@ class ProgressLine : public StepObserver<2> {
     const double rate = double(sim.particles.real_count()) * double(sim.step_count() - start_step_) / wall;
     const double eta = wall / (sim.time() - start_time_) * (end_ - sim.time());
     const std::size_t left = sim.left_the_domain().size();
-    std::cerr << fmt::format("\rt = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s{}   ",
-                             sim.time(), end_, dt, rate / 1e6, eta,
+    std::cerr << fmt::format("\r{}t = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s{}   ",
+                             label_, sim.time(), end_, dt, rate / 1e6, eta,
                              left ? fmt::format("  {} left the domain", left) : std::string())
               << std::flush;
   }
@@ -200,6 +203,7 @@ class ProgressLine : public StepObserver<2> {
   double end_;
   long start_step_;
   double start_time_;
+  std::string label_;
 };
 
 // run.json's account of the particles taken out of the run (Simulation::left_the_domain): how many, and the first
@@ -225,13 +229,14 @@ std::string left_the_domain_note(const Simulation<2>& sim) {
 
 // A run ready to step: its scene built, its output folder checked, and for a resumed run the checkpoint's state.
 struct PreparedRun {
-  std::unique_ptr<cases::Scene> scene;
+  std::unique_ptr<cases::Scene> scene;  // its start (settling, gates) left to settle_before_the_run
   std::filesystem::path out;
   CheckpointHeader header;  // what its checkpoints will say
-  std::optional<Checkpoint> resumed_from;
+  std::optional<Checkpoint> resumed_from;    // a checkpoint of the run (after t = 0) to continue from
+  std::optional<Checkpoint> settling_from;   // a checkpoint taken while the water settled, to settle on from
 };
 
-// A new run: resolve, check the output folder, build (settling included).
+// A new run: resolve, check the output folder, build (its settling is the run's: settle_before_the_run).
 std::optional<PreparedRun> prepare_new_run(const RunArguments& args) {
   const auto resolved = resolve_or_report(args);
   if (!resolved) return std::nullopt;
@@ -244,7 +249,7 @@ std::optional<PreparedRun> prepare_new_run(const RunArguments& args) {
     std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
     return std::nullopt;
   }
-  run.scene = build_or_report(args, *resolved);
+  run.scene = build_or_report(args, *resolved, cases::StartOfRun::left_to_caller);
   if (!run.scene) return std::nullopt;
   run.header = {checkpoint_writer(), std::filesystem::absolute(args.scene).string(), args.overrides,
                 YAML::Dump(*resolved)};
@@ -265,7 +270,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
 }
 
 // A resumed run: the checkpoint's scene (or the one given, which must be the same), built without settling, then the
-// checkpoint's state put back. Refusals name why (exit 2).
+// checkpoint's state put back; or, from a checkpoint taken while settling, built to settle on from it. Refusals name
+// why (exit 2).
 std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
   PreparedRun run;
   run.out = args.resume;
@@ -302,7 +308,8 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
   }
   try {
     run.scene = cases::build_scene(cases::load_yaml_text(h.resolved_scene), scene_file.stem().string(),
-                                   scene_file.parent_path().empty() ? "." : scene_file.parent_path(), true);
+                                   scene_file.parent_path().empty() ? "." : scene_file.parent_path(),
+                                   h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled);
   } catch (const cases::YamlTextRefused& e) {
     std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
               << "\n";
@@ -313,6 +320,7 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
     return std::nullopt;
   }
   run.header = h;
+  if (h.settling) run.settling_from = std::exchange(run.resumed_from, std::nullopt);
   return run;
 }
 
@@ -349,6 +357,80 @@ class CheckpointObserver : public StepObserver<2> {
   double interval_, next_;
 };
 
+// A run stopped by a signal while its water settled: a checkpoint of the simulation and the settling (from which
+// --resume settles on, then runs), and run.json saying so. Returns the exit code, 128 + the signal.
+int stop_while_settling(const PreparedRun& run, const Simulation<2>& sim, const Settling& settling) {
+  std::filesystem::create_directories(run.out);
+  StateWriter state;
+  sim.save_state(state);
+  settling.save_state(state);
+  Checkpoint c{run.header, state.bytes()};
+  c.header.time = sim.time();
+  c.header.step = sim.step_count();
+  c.header.settling = true;
+  write_checkpoint(run.out, c);
+  const int signal = interrupted;
+  const std::string msg = fmt::format(
+      "interrupted by {} while the water settled, at {:.6g} of its {:.6g} s (step {}); checkpoint written: continue "
+      "with slide run --resume {}",
+      signal == SIGTERM ? "SIGTERM" : "SIGINT", sim.time(), settling.duration(), sim.step_count(), run.out.string());
+  json j;
+  j["program"] = "slide";
+  j["version"] = SLIDE_VERSION;
+  j["case"] = run.scene->name;
+  j["scene_file"] = run.header.scene_file;
+  j["overrides"] = run.header.overrides;
+  j["status"] = "interrupted";
+  j["message"] = msg;
+  j["settling"] = {{"time", sim.time()}, {"duration", settling.duration()}, {"steps", sim.step_count()}};
+  j["simulated_time"] = 0.0;
+  j["steps"] = 0;
+  write_file_atomically(run.out / "run.json", j.dump(2) + "\n");
+  std::cerr << "\nslide: " << msg << "\n";
+  return 128 + signal;
+}
+
+// The settled start (method.initial_state: settled), run here rather than while the scene is built, so that a signal
+// stops it as it stops the run: within a step, with a checkpoint (stop_while_settling). A run resumed from such a
+// checkpoint settles on from it. Then the start is completed (the settled water checked at rest, the gates lifted).
+// Returns an exit code where the run ends here (128 + signal; 2 where the water is refused), nothing where it goes on.
+std::optional<int> settle_before_the_run(PreparedRun& run, const RunArguments& args) {
+  cases::Scene& scene = *run.scene;
+  Simulation<2>& sim = *scene.simulation;
+  std::optional<Relaxation> settled;
+  const std::string refused = "slide: invalid scene " + (args.scene.empty() ? run.header.scene_file : args.scene.string()) +
+                              ": method.initial_state: ";
+  if (scene.pending_settling) {
+    Settling settling(sim, *scene.pending_settling);
+    if (run.settling_from) {
+      StateReader in(run.settling_from->state);
+      sim.restore_state(in);
+      settling.restore_state(in);
+    }
+    InterruptWatch interrupt(std::numeric_limits<double>::infinity());
+    ProgressLine progress(Clock::now(), settling.duration(), sim, "settling: ");
+    std::vector<StepObserver<2>*> observers{&interrupt};
+    if (!args.quiet) observers.push_back(&progress);
+    try {
+      if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped)
+        return stop_while_settling(run, sim, settling);
+      settled = settling.finish();
+    } catch (const std::runtime_error& e) {  // it went unstable, or water left the domain
+      std::cerr << (args.quiet ? "" : "\n") << refused << e.what() << "\n";
+      return 2;
+    }
+    if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\r";
+  }
+  try {
+    cases::complete_start(scene, settled);
+  } catch (const cases::SceneError& e) {
+    std::cerr << "slide: invalid scene " << (args.scene.empty() ? run.header.scene_file : args.scene.string()) << ": "
+              << e.what() << "\n";
+    return 2;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int run_command(const RunArguments& args) {
@@ -360,6 +442,12 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
+  // From here on SIGINT and SIGTERM stop the run where it is, building, settling or stepping: before the next step,
+  // with a checkpoint (exit 128 + signal). A signal while the scene is built stops it before its first step.
+  interrupted = 0;
+  using Handler = void (*)(int);
+  const Handler previous_sigint = std::signal(SIGINT, on_stop_signal);
+  const Handler previous_sigterm = std::signal(SIGTERM, on_stop_signal);
   std::optional<PreparedRun> run = args.resume.empty() ? prepare_new_run(args) : prepare_resumed_run(args);
   if (!run) return 2;
   const std::unique_ptr<cases::Scene>& scene = run->scene;
@@ -367,6 +455,7 @@ int run_command(const RunArguments& args) {
   auto& sim = *scene->simulation;
   for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
     if (!slide.floats_warning.empty()) std::cerr << "slide: warning: " << slide.floats_warning << "\n";
+  if (const auto ended = settle_before_the_run(*run, args)) return *ended;
   std::filesystem::create_directories(out);
   // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
   std::error_code no_checkpoint;
@@ -402,6 +491,9 @@ int run_command(const RunArguments& args) {
     j["overrides"] = run->header.overrides;
     if (run->resumed_from)
       j["resumed_from"] = {{"time", run->resumed_from->header.time}, {"step", run->resumed_from->header.step}};
+    if (run->settling_from)
+      j["resumed_from"] = {{"settling_time", run->settling_from->header.time},
+                           {"settling_step", run->settling_from->header.step}};
     j["status"] = status;
     j["message"] = message;
     j["threads"] = thread_count();
@@ -449,15 +541,10 @@ int run_command(const RunArguments& args) {
   // reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
   LastGoodState last_good(sim);
-  using Handler = void (*)(int);
-  Handler previous_sigint = SIG_DFL, previous_sigterm = SIG_DFL;
   try {
     if (!run->resumed_from) outputs.write_initial();
     write_run_json("running", "", json::object());
 
-    interrupted = 0;
-    previous_sigint = std::signal(SIGINT, on_stop_signal);
-    previous_sigterm = std::signal(SIGTERM, on_stop_signal);
     InterruptWatch interrupt(args.stop_at);
     ProgressLine progress(loop_start, scene->end_time, sim);
     std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
