@@ -683,7 +683,7 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   try {
     value = load_yaml_text(assignment.substr(eq + 1));
   } catch (const YamlTextRefused& e) {
-    bad_override(assignment, std::string("cannot read the value as YAML: ") + e.what());
+    bad_override(assignment, std::string("cannot parse the value: ") + e.what());
   }
   if (const auto d = find_duplicate_key(value)) bad_override(assignment, "key " + d->path + " " + duplicate_key_message(*d));
 

@@ -278,7 +278,7 @@ TEST(Sweep, ABadSweepExitsTwoAndWritesNothing) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("particle_spacing"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
-  EXPECT_EQ(run_command(slide_binary() + " sweep --collect " + (dir / "nowhere").string()).exit_code, 1);
+  EXPECT_EQ(run_command(slide_binary() + " sweep --collect " + (dir / "nowhere").string()).exit_code, 2);  // issue 30
   // Wrong YAML types exit 2 naming the key, not an exception's text.
   write_file(dir / "t.yaml", "scene: [a, b]\nvary: {particle_spacing: [0.01]}\n");
   const CommandResult t = run_command(slide_binary() + " sweep " + (dir / "t.yaml").string() + " --out " +
