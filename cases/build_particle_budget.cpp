@@ -66,27 +66,57 @@ std::string size_text(double bytes) {
   return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9) : fmt::format("{:.3g} MB", bytes / 1e6);
 }
 
+std::optional<MemoryLimit> read_memory_limit() {
+  try {
+    return memory_limit();
+  } catch (const std::invalid_argument& e) {
+    throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
+  }
+}
+
 }  // namespace
 
+// Before any particle is made: refused where slide cannot index the particles, or where their own arrays alone would
+// not fit (so that a scene far too large for the machine is refused without allocating until it swaps). The run's
+// estimate, which needs the particles' neighbour counts, follows once they are made (check_run_memory).
 void check_particle_budget(SceneBuild& b) {
   const double n = estimated_particles(b);
   if (n > 4294967295.0)
     throw SceneError("particle_spacing", fmt::format("the scene would make about {:.3g} particles at dp = {} m, more "
                                                      "than slide can index (2^32 - 1); use a larger particle_spacing",
                                                      n, b.dp));
-  std::optional<MemoryLimit> limit;
-  try {
-    limit = memory_limit();
-  } catch (const std::invalid_argument& e) {
-    throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
-  }
-  const auto& o = b.options();
-  const double bytes = run_memory_bytes(n, listed_neighbours_estimate(o.re_over_dp, o.skin_over_dp));
+  const auto limit = read_memory_limit();
+  const double bytes = program_resident_bytes() + particle_state_bytes(n);
   if (limit && bytes > limit->bytes)
     throw SceneError("particle_spacing",
-                     fmt::format("the scene would make about {:.3g} particles at dp = {} m and need about {} of "
-                                 "memory, more than the {} available ({}); use a larger particle_spacing",
+                     fmt::format("the scene would make about {:.3g} particles at dp = {} m, whose arrays alone need "
+                                 "about {}, more than the {} available ({}); use a larger particle_spacing",
                                  n, b.dp, size_text(bytes), size_text(limit->bytes), limit->source));
+}
+
+// Once the particles are made and their neighbours listed: the run's peak memory (cases/particle_budget.hpp), what
+// slide check prints and run.json records, refused where it exceeds what this machine or job has, before the run
+// allocates the rest.
+void check_run_memory(SceneBuild& b) {
+  const Simulation<2>& sim = *b.sim;
+  const double n = double(sim.particles.size());
+  RunMemoryInputs in;
+  in.particles = n;
+  in.listed_per_particle = double(sim.neighbors().total()) / std::max(1.0, n);
+  in.snapshots = b.scene->output.snapshots;
+  in.bodies_or_slides = !b.scene->bodies.empty() || !b.scene->slides.empty();
+  for (const auto& phase : sim.phases) in.non_newtonian = in.non_newtonian || !std::holds_alternative<Newtonian>(phase.rheology);
+  const double settling = b.initial_state == InitialState::settled ? b.r["method"]["settling_time"].as<double>() : 0.0;
+  const double dt = sim.allowed_time_step().first;
+  in.body_steps = dt > 0.0 ? double(b.scene->bodies.size()) * (settling + b.scene->end_time) / dt : 0.0;
+  b.scene->memory_estimate_bytes = program_resident_bytes() + run_memory_bytes(in);
+  const auto limit = read_memory_limit();
+  if (limit && b.scene->memory_estimate_bytes > limit->bytes)
+    throw SceneError("particle_spacing",
+                     fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak, "
+                                 "more than the {} available ({}); use a larger particle_spacing",
+                                 sim.particles.real_count(), b.dp, size_text(b.scene->memory_estimate_bytes),
+                                 size_text(limit->bytes), limit->source));
 }
 
 }  // namespace slide::cases

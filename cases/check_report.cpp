@@ -37,7 +37,7 @@ std::string summary(const Scene& scene) {
       "initial dt      {:.6g} s, limited by {}\n"
       "end time        {} s (about {:.0f} steps at the initial dt)\n"
       "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
-      "memory          about {:.1f} MB{}\n",
+      "memory          about {:.1f} MB at its peak{}\n",
       scene.name, sim.particles.real_count(), scene.fluid_count, scene.wall_count, scene.dummy_count, o.dp,
       o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
       scene.lattice_offset[1] != 0.0
@@ -45,7 +45,8 @@ std::string summary(const Scene& scene) {
           : std::string(),
       sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene.sound_speed_source, to_string(o.gradient), dt, to_string(limit), scene.end_time, scene.end_time / dt,
-      o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1], memory_estimate_mb(sim), memory_available());
+      o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1], scene.memory_estimate_bytes / 1e6,
+      memory_available());
 }
 
 std::string start(const Scene& scene) {
@@ -112,11 +113,6 @@ std::string bodies(const Scene& scene) {
 
 }  // namespace
 
-double memory_estimate_mb(const Simulation<2>& sim) {
-  // periodic ghosts included: they take memory
-  const double n = double(sim.particles.size());
-  return run_memory_bytes(n, double(sim.neighbors().total()) / std::max(1.0, n)) / 1.0e6;
-}
 
 // A phase's wall condition (fluid/basal_friction.hpp).
 static std::string basal_condition(double mu_b) {

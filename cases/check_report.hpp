@@ -7,10 +7,6 @@
 
 namespace slide::cases {
 
-// Memory the run will hold, MB: two copies of the particles (the state and the last good one), the position copy
-// for the skin test, and the neighbour list.
-double memory_estimate_mb(const Simulation<2>& sim);
-
 std::string check_report(const Scene& scene);
 
 }  // namespace slide::cases

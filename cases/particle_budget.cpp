@@ -1,5 +1,7 @@
 #include "cases/particle_budget.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -10,19 +12,43 @@
 
 namespace slide::cases {
 
-double run_memory_bytes(double n, double neighbours) {
+// The constants are measured (peak_resident_bytes less resident_bytes_at_start of short runs of every shipped case at
+// its spacing and 1.5 times it, 2 threads, issue 30), around what the code allocates:
+//  * per particle, 310 B + 12 B a listed neighbour: the particles' arrays (130 B: fluid/particles.hpp), the last good
+//    state (62 B: tools/run_outputs.hpp IdOrdered), the step's working copies (56 B), the corrective matrices and
+//    other per-particle fields (about 60 B), and the list: a 4 B index and an 8 B weight a neighbour
+//    (fluid/neighbor_grid.hpp, fluid/pair_weights.hpp); the bench case (no snapshots) measured 524-543 B a particle
+//    at 18 listed neighbours;
+//  * with snapshots 100 B a particle more (the snapshot's gathered copy, its padded positions and connectivity) and
+//    7 MB fixed (HDF5's library and caches), against 3.5 MB without (the runtime's thread pools and buffers);
+//  * 1 MB more with bodies or slides; 80 B a particle more with a non-Newtonian phase (the semi-implicit viscosity's
+//    solver vectors);
+//  * Bullet's journal: up to 12 doubles a body a step (a force, the step, a damped velocity while settling), and a
+//    vector's doubling: a floating block's peak grew 11 MB over its 2 s of settling and 2 s of run (70,000 steps).
+// Everything above the program's own is taken 5 % larger: the measured peaks scatter by 3 % about the sum.
+double run_memory_bytes(const RunMemoryInputs& in) {
+  const double per_particle = 310.0 + 12.0 * in.listed_per_particle + (in.snapshots ? 100.0 : 0.0) +
+                              (in.non_newtonian ? 80.0 : 0.0);
+  const double fixed = (in.snapshots ? 7.0e6 : 3.5e6) + (in.bodies_or_slides ? 1.0e6 : 0.0);
+  const double journal = 2.0 * 12.0 * sizeof(double) * in.body_steps;
+  return 1.05 * (fixed + in.particles * per_particle + journal);
+}
+
+double particle_state_bytes(double n) {
   // fluid/particles.hpp: four vectors, seven doubles, phase and kind, id and body frame (a body's own table aside)
-  const double state = 4 * sizeof(Vec<2>) + 7 * sizeof(double) + 2 + 2 * sizeof(std::uint32_t);
-  // tools/run_outputs.hpp IdOrdered: position and velocity, pressure, number density and density, phase and kind, id
-  const double last_good = 2 * sizeof(Vec<2>) + 3 * sizeof(double) + 2 + sizeof(std::uint32_t);
-  const double working = 3 * sizeof(Vec<2>) + 2 * sizeof(std::uint32_t);
-  // fluid/neighbor_grid.hpp (first and count too) and fluid/pair_weights.hpp
-  const double list = (neighbours + 2) * sizeof(std::uint32_t) + neighbours * sizeof(double);
-  // fluid/image_neighbours.hpp: 8 B and about 9 kept fluid neighbours (16 B each) for each wetted boundary particle,
-  // which this estimate does not know the number of: in the bench case (3,018 boundary particles of 23,018) they come
-  // to about 20 B a particle, counted here for every scene
-  const double images = 20.0;
-  return n * (state + last_good + working + list + images);
+  return n * (4 * sizeof(Vec<2>) + 7 * sizeof(double) + 2 + 2 * sizeof(std::uint32_t));
+}
+
+double program_resident_bytes() {
+  static const double at_start = resident_bytes_now();
+  return at_start;
+}
+
+double resident_bytes_now() {
+  std::ifstream statm("/proc/self/statm");
+  double total_pages = 0.0, resident_pages = 0.0;
+  if (!(statm >> total_pages >> resident_pages)) return 0.0;
+  return resident_pages * double(sysconf(_SC_PAGESIZE));
 }
 
 double listed_neighbours_estimate(double re_over_dp, double skin_over_dp) {

@@ -7,14 +7,34 @@
 
 namespace slide::cases {
 
-// Bytes a run holds for n particles with `neighbours` listed neighbours each on average: the particles' arrays, the
-// last good state a failed run writes (what a snapshot holds), the step's working copies (positions at the list's
-// build and at the step's start, one vector scratch, the grid's two indices), the list and its pair weights.
-double run_memory_bytes(double n, double neighbours);
+// What a run's peak memory depends on, known once its particles are made (cases/build_particle_budget.cpp).
+struct RunMemoryInputs {
+  double particles = 0.0;            // all, periodic ghosts included
+  double listed_per_particle = 0.0;  // neighbour-list entries a particle, as built
+  bool snapshots = true;             // output.snapshots: HDF5 and the snapshot's buffers
+  bool bodies_or_slides = false;     // rigid bodies (Bullet) or deformable slides
+  bool non_newtonian = false;        // a phase with a rheology: the semi-implicit viscosity's vectors
+  double body_steps = 0.0;           // rigid bodies x the steps of the settling and the run (Bullet's journal)
+};
+
+// The run's peak resident memory above the program's own (program_resident_bytes), bytes: fixed parts, per-particle
+// arrays, the neighbour list, and Bullet's journal, which grows by every step (coupling/rigid_bodies.hpp: a
+// checkpoint replays it). Measured against peak_resident_bytes on every shipped case (tests/test_memory_estimate.cpp).
+double run_memory_bytes(const RunMemoryInputs& in);
+
+// Bytes of the particles' own arrays (fluid/particles.hpp) for n particles: what any run of them holds at least. The
+// guard before any particle is made refuses a scene whose particles alone would not fit.
+double particle_state_bytes(double n);
 
 // Listed neighbours a particle has on average, estimated before any particle is made: the 2-D lattice points within
 // the list's radius (re + skin), a quarter more for compression.
 double listed_neighbours_estimate(double re_over_dp, double skin_over_dp);
+
+// The program's own resident memory (code, libraries, runtime) before any scene: taken at the first call, which
+// slide's main makes first thing. 0 where /proc/self/statm cannot be read.
+double program_resident_bytes();
+// The resident size now, bytes (Linux: /proc/self/statm's second field, in pages); 0 where it cannot be read.
+double resident_bytes_now();
 
 struct MemoryLimit {
   double bytes = 0.0;

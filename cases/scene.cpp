@@ -44,6 +44,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   } catch (const std::invalid_argument& e) {  // what the solver refuses: a periodic domain's set-up
     throw SceneError("domain.periodic_x", e.what());
   }
+  check_run_memory(b);
   plan_settling(b);
   b.scene->simulation = std::move(b.sim);
   std::unique_ptr<Scene> scene = std::move(b.scene);

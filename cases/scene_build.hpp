@@ -90,6 +90,7 @@ void read_fluid_options(SceneBuild& b);        // build_options.cpp
 void check_lattice_choices(SceneBuild& b);     // build_options.cpp
 void check_period(SceneBuild& b);             // build_options.cpp
 void check_particle_budget(SceneBuild& b);     // build_particle_budget.cpp
+void check_run_memory(SceneBuild& b);          // build_particle_budget.cpp: Scene::memory_estimate_bytes
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
 void place_floating_bodies(SceneBuild& b);     // build_bodies.cpp: bodies that float while settling, to their draft
 void build_walls(SceneBuild& b);               // build_walls.cpp

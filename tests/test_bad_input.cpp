@@ -81,6 +81,10 @@ TEST(BadInput, ASceneThatDoesNotFitTheMemoryIsRefused) {
   expect_refused(run_command("SLIDE_MEMORY_LIMIT=50k " + check),
                  {"particle_spacing", "more than the 0.05 MB available (SLIDE_MEMORY_LIMIT)"});
   expect_refused(run_command(check + " --set particle_spacing=1e-6"), {"particle_spacing", "2^32 - 1"});
+  // Its particles fit 15 MB, its run does not (some 20 MB at its peak, the program's own 12 MB included): refused on
+  // the run's estimate, which slide check prints, once the particles are made and before anything runs.
+  expect_refused(run_command("SLIDE_MEMORY_LIMIT=15M " + check),
+                 {"particle_spacing", "would need about", "at its peak, more than the 15 MB available"});
   expect_refused(run_command("SLIDE_MEMORY_LIMIT=lots " + check), {"SLIDE_MEMORY_LIMIT"});
   EXPECT_EQ(run_command("SLIDE_MEMORY_LIMIT=1G " + check).exit_code, 0);
 }

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cases/check_report.hpp"
+#include "cases/particle_budget.hpp"
 #include "cases/scene.hpp"
 #include "cases/yaml_text.hpp"
 #include "coupling/free_surface_gauge.hpp"
@@ -45,13 +46,6 @@ double peak_resident_bytes() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return 1024.0 * double(u.ru_maxrss);
-}
-// The resident size now, bytes (Linux: /proc/self/statm's second field, in pages); 0 where it cannot be read.
-double resident_bytes_now() {
-  std::ifstream statm("/proc/self/statm");
-  double total_pages = 0.0, resident_pages = 0.0;
-  if (!(statm >> total_pages >> resident_pages)) return 0.0;
-  return resident_pages * double(sysconf(_SC_PAGESIZE));
 }
 }  // namespace
 namespace {
@@ -436,7 +430,7 @@ std::optional<int> settle_before_the_run(PreparedRun& run, const RunArguments& a
 int run_command(const RunArguments& args) {
   const auto setup_start = Clock::now();
   // The program's own memory (code, libraries, runtime) before any scene: what the particles cost is the peak above it.
-  const double resident_bytes_at_start = resident_bytes_now();
+  const double resident_bytes_at_start = cases::program_resident_bytes();
   if (args.threads < 0) {
     std::cerr << "slide: --threads must be at least 1 (got " << args.threads << ")\n";
     return 2;
@@ -529,6 +523,7 @@ int run_command(const RunArguments& args) {
     j["particle_steps_per_second"] = loop_rate(wall);
     j["peak_resident_bytes"] = peak_resident_bytes();
     j["resident_bytes_at_start"] = resident_bytes_at_start;
+    j["memory_estimate_bytes"] = scene->memory_estimate_bytes;
     j["pair_lanes"] = pair_lanes;
     j["snapshots"] = outputs.snapshot_count();
     j["left_the_domain"] = left_the_domain_json(sim);

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "cases/particle_budget.hpp"
 #include "cases/scene.hpp"
 #include "tools/report.hpp"
 #include "tools/run_driver.hpp"
@@ -107,6 +108,7 @@ int run_main(int argc, char** argv) {
 // Nothing escapes: whatever a command did not expect ends the process with exit 1 and one line (a run in its step
 // loop has already written its last good state and run.json by then: tools/run_driver.cpp).
 int main(int argc, char** argv) {
+  slide::cases::program_resident_bytes();  // the program's own memory, taken before any scene (particle_budget.hpp)
   try {
     return run_main(argc, argv);
   } catch (const std::exception& e) {

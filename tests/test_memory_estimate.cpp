@@ -1,0 +1,75 @@
+// The run's memory estimate (cases/particle_budget.hpp, issue 30): one figure, printed by `slide check`, recorded in
+// run.json and used by the guard, that bounds the run's measured peak (peak_resident_bytes) from above by at most
+// 15 %. The default set holds it on short runs of small cases with and without a body; the `long` set on every
+// shipped case at two spacings, and on the floating block run as shipped (Bullet's journal grows by every step).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "tests/cli_helpers.hpp"
+
+namespace slide::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Measured {
+  double peak_mb = 0.0, estimate_mb = 0.0, checked_mb = 0.0;
+};
+
+// Runs `case_name` with `sets` and reads its peak and estimate; `slide check` with the same sets prints its figure.
+Measured measure(const std::string& case_name, const std::string& sets) {
+  const auto dir = fresh_directory("memory_" + case_name);
+  const std::string scene = (source_dir() / "cases" / (case_name + ".yaml")).string();
+  const auto r = run_command(slide_binary() + " run " + scene + " " + sets + " --quiet --threads 2 --out " +
+                             (dir / "run").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(read_file(dir / "run" / "run.json"));
+  Measured m;
+  m.peak_mb = j["peak_resident_bytes"].get<double>() / 1e6;
+  m.estimate_mb = j["memory_estimate_bytes"].get<double>() / 1e6;
+  const auto c = run_command(slide_binary() + " check " + scene + " " + sets);
+  std::smatch found;
+  const std::regex memory_line("memory +about ([0-9.]+) MB at its peak");
+  if (std::regex_search(c.output, found, memory_line)) m.checked_mb = std::stod(found[1]);
+  std::printf("%s %s: peak %.1f MB, estimate %.1f MB (%+.1f %%), check %.1f MB\n", case_name.c_str(), sets.c_str(),
+              m.peak_mb, m.estimate_mb, 100.0 * (m.estimate_mb / m.peak_mb - 1.0), m.checked_mb);
+  return m;
+}
+
+void expect_bound(const Measured& m) {
+  EXPECT_GE(m.estimate_mb, m.peak_mb);
+  EXPECT_LE(m.estimate_mb, 1.15 * m.peak_mb);
+  // The same estimate: it differs only by each process's own footprint at its start (a few hundred kB).
+  EXPECT_NEAR(m.checked_mb, m.estimate_mb, 0.5);
+}
+
+const std::string kShort = "--set end_time=0.02 --set output.snapshot_interval=0.01 --set method.settling_time=0.02";
+
+TEST(MemoryEstimate, BoundsThePeakOfShortRunsOfASmallCaseAndABodyWithin15Percent) {
+  expect_bound(measure("dam_break_2d", kShort));
+  expect_bound(measure("dam_break_2d", kShort + " --set particle_spacing=0.00428625"));
+  expect_bound(measure("heinrich_wedge_subaerial_2d", kShort + " --set particle_spacing=0.03"));
+  expect_bound(measure("dam_break_bench_2d", kShort + " --set particle_spacing=0.015"));  // no snapshots
+}
+
+TEST(LongMemoryEstimate, BoundsThePeakOfEveryShippedCaseAtTwoSpacingsWithin15Percent) {
+  for (const auto& e : fs::directory_iterator(source_dir() / "cases")) {
+    if (e.path().extension() != ".yaml") continue;
+    const std::string name = e.path().stem().string();
+    const std::string text = read_file(e.path());
+    std::smatch found;
+    ASSERT_TRUE(std::regex_search(text, found, std::regex("\\nparticle_spacing: ([0-9.e-]+)"))) << name;
+    const double dp = std::stod(found[1]);
+    // The periodic channel's period holds no coarser spacing: it is taken finer.
+    const double other = name == "hb_poiseuille_2d" ? 0.5 * dp : 1.5 * dp;
+    expect_bound(measure(name, kShort));
+    expect_bound(measure(name, kShort + " --set particle_spacing=" + std::to_string(other)));
+  }
+}
+
+TEST(LongMemoryEstimate, BoundsThePeakOfTheFloatingBlockAsShipped) { expect_bound(measure("floating_block_2d", "")); }
+
+}  // namespace
+}  // namespace slide::testing
