@@ -102,8 +102,15 @@ TEST(Report, ARunsPageIsSelfContainedWithItsFigures) {
   EXPECT_NE(html.find("Martin &amp; Moyce dam break"), std::string::npos);
   EXPECT_NE(html.find("Time-step limits"), std::string::npos);
   EXPECT_NE(html.find("method.gradient"), std::string::npos);
-  // tools/plot_run.py draws the gauges and the surge front (CI installs Debian's python3-matplotlib).
-  EXPECT_EQ(expect_self_contained(html), 2) << r.output;
+  // A sentence, not a JSON object (issue 30).
+  EXPECT_NE(html.find("particles: "), std::string::npos);
+  EXPECT_NE(html.find(" fluid, "), std::string::npos);
+  EXPECT_EQ(html.find("{&quot;"), std::string::npos);
+  EXPECT_EQ(html.find("{\"dummy"), std::string::npos);
+  // tools/plot_run.py draws the particles, the gauges and the surge front (CI installs Debian's python3-matplotlib
+  // and python3-h5py).
+  EXPECT_EQ(expect_self_contained(html), 3) << r.output;
+  EXPECT_NE(html.find("coloured by phase and by speed"), std::string::npos);
 }
 
 TEST(Report, ASweepsPageRecommendsAndListsEveryRun) {
@@ -167,14 +174,14 @@ TEST(Report, OpensInAHeadlessBrowserWithEveryImageDecodedAndNothingFetched) {
   const std::string result = browser_check(dir / "run/report.html", dir);
   // A browser that does not start (no display libraries, no shared memory in a container) says nothing of the page.
   if (result.rfind("no result", 0) == 0) GTEST_SKIP() << "chromium did not load the page here: " << result;
-  EXPECT_EQ(result, "images=2 undecoded=0 fetched=0");
+  EXPECT_EQ(result, "images=3 undecoded=0 fetched=0");
   // The control: one image damaged, one remote.
   std::string page = read_file(dir / "run/report.html");
   const auto data = page.find("base64,") + 7;
   page.replace(data, 40, "AAAA");
   page.replace(page.find("</body>"), 0, "<img src=\"http://example.invalid/x.png\">");
   write_file(dir / "control.html", page);
-  EXPECT_EQ(browser_check(dir / "control.html", dir), "images=3 undecoded=2 fetched=1");
+  EXPECT_EQ(browser_check(dir / "control.html", dir), "images=4 undecoded=2 fetched=1");
 }
 
 TEST(Report, AFolderThatIsNeitherExitsTwo) {

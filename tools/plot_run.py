@@ -4,9 +4,10 @@
 free-surface profiles (profiles.png); for deformable slides the front and largest thickness against time and the upper
 surface at the outline times (slide.png); for a scene with measured slide shapes (diagnostics.slide_shapes) the model's
 upper surface against them at each measured time, with the front's error and the surfaces' rms distance
-(slide_shapes.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs: overlaid,
-e.g. resolutions, or a free and a prescribed run).
-Uses Debian's python3-matplotlib and python3-numpy through /usr/bin/python3."""
+(slide_shapes.png); the particles themselves at up to four snapshot times, coloured by phase and by speed
+(particles.png, from particles.h5, first run only). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs:
+overlaid, e.g. resolutions, or a free and a prescribed run).
+Uses Debian's python3-matplotlib, python3-numpy and python3-h5py through /usr/bin/python3."""
 import csv
 import json
 import os
@@ -181,6 +182,80 @@ def plot_shapes(runs, target):
     print("wrote", target)
 
 
+PHASE_COLOURS = ["#3a7bd5", "#a0522d", "#e0a030", "#6a9a3a", "#8060c0"]  # water first, then slides' phases
+
+
+def snapshot_indices(count, wanted=4):
+    """Up to `wanted` snapshots spread over the series, the first and the last among them."""
+    if count <= wanted:
+        return list(range(count))
+    return sorted({round(k * (count - 1) / (wanted - 1)) for k in range(wanted)})
+
+
+def plot_particles(run, target):
+    """The particles at up to four times: top row by phase (boundary particles grey), bottom row by speed."""
+    try:
+        import h5py
+        import numpy as np
+    except ImportError:
+        print("plot_run: particles.png skipped (it needs python3-h5py)", file=sys.stderr)
+        return
+    path = os.path.join(run, "particles.h5")
+    with h5py.File(path, "r") as f:
+        times = list(f["times"][()])
+        picked = [(i, times[i]) for i in snapshot_indices(len(times))]
+        frames = []
+        for i, t in picked:
+            g = f["snapshots/%06d" % i]
+            kind = g["kind"][()]
+            frames.append((t, g["position"][()], g["velocity"][()], g["phase"][()], kind))
+        kind_codes = f["snapshots/%06d/kind" % picked[0][0]].attrs.get("codes", b"")
+    if not frames:
+        return
+    kind_codes = kind_codes.decode() if isinstance(kind_codes, bytes) else str(kind_codes)
+    fluid_code = 0
+    for item in kind_codes.split(","):  # "0 fluid, 1 wall, 2 dummy" (tools/snapshot_writer.hpp)
+        words = item.split()
+        if len(words) == 2 and words[1] == "fluid":
+            fluid_code = int(words[0])
+    all_xy = np.concatenate([x[:, :2] for _, x, _, _, _ in frames])
+    lo, hi = all_xy.min(axis=0), all_xy.max(axis=0)
+    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-12)
+    width = 4.2
+    fig, axes = plt.subplots(2, len(frames), figsize=(width * len(frames) + 1.0, 2 * width * aspect + 1.0),
+                             squeeze=False, layout="constrained")
+    top_speed = max(float(np.linalg.norm(v[k == fluid_code][:, :2], axis=1).max(initial=0.0))
+                    for _, _, v, _, k in frames) or 1.0
+    # Markers one spacing wide: the axes' points per metre times dp (run.json), so that the lattice shows no gaps.
+    try:
+        with open(os.path.join(run, "run.json")) as f:
+            dp = float(json.load(f)["scene"]["particle_spacing"])
+    except (OSError, KeyError, ValueError):
+        dp = (hi[0] - lo[0]) / 200.0
+    size = (1.15 * dp * width * 72.0 / max(hi[0] - lo[0], 1e-12)) ** 2
+    for col, (t, x, v, phase, kind) in enumerate(frames):
+        fluid = kind == fluid_code
+        colours = np.array([PHASE_COLOURS[p % len(PHASE_COLOURS)] for p in phase], dtype=object)
+        colours[~fluid] = "#888888"
+        ax = axes[0][col]
+        ax.scatter(x[:, 0], x[:, 1], s=size, c=list(colours), linewidths=0)
+        ax.set_title(f"t = {t:.3g} s: phase", fontsize=9)
+        ax = axes[1][col]
+        ax.scatter(x[~fluid, 0], x[~fluid, 1], s=size, c="#888888", linewidths=0)
+        sc = ax.scatter(x[fluid, 0], x[fluid, 1], s=size, c=np.linalg.norm(v[fluid, :2], axis=1), cmap="viridis",
+                        vmin=0.0, vmax=top_speed, linewidths=0)
+        ax.set_title(f"t = {t:.3g} s: speed", fontsize=9)
+        for a in (axes[0][col], axes[1][col]):
+            a.set_aspect("equal")
+            a.set_xlim(lo[0], hi[0])
+            a.set_ylim(lo[1], hi[1])
+            a.tick_params(labelsize=7)
+    fig.colorbar(sc, ax=[a for row in axes for a in row], label="speed, m/s", shrink=0.6)
+    fig.suptitle(f"{label_of(run)}: particles (grey: walls and bodies)", fontsize=10)
+    fig.savefig(target, dpi=110)
+    plt.close(fig)
+
+
 def main():
     runs = sys.argv[1:]
     if not runs:
@@ -198,6 +273,8 @@ def main():
         plot_slides(runs, os.path.join(out, "slide.png"))
     if all(os.path.exists(os.path.join(r, "slide_shapes.csv")) for r in runs):
         plot_shapes(runs, os.path.join(out, "slide_shapes.png"))
+    if os.path.exists(os.path.join(out, "particles.h5")):
+        plot_particles(out, os.path.join(out, "particles.png"))
 
 
 if __name__ == "__main__":

@@ -69,13 +69,22 @@ json read_json(const fs::path& file) {
   return json::parse(in);
 }
 
+// "12800 particles: 11667 fluid, 465 wall, 668 dummy" from run.json's counts (a sentence, not a JSON object).
+std::string particle_sentence(const json& run) {
+  if (!run.contains("particles") || !run["particles"].is_object()) return "";
+  const json& p = run["particles"];
+  const auto count = [&](const char* key) { return p.contains(key) && p[key].is_number() ? p[key].dump() : "?"; };
+  return fmt::format("{} particles: {} fluid, {} wall, {} dummy", count("total"), count("fluid"), count("wall"),
+                     count("dummy"));
+}
+
 std::string run_body(const fs::path& dir) {
   const json run = read_json(dir / "run.json");
   std::string body = fmt::format("<p><b>{}</b>: {}</p>\n", markup_escaped(run.value("status", "?")),
                                  markup_escaped(run.value("message", "")));
   body += "<h2>Cost</h2>\n<table>\n";
   const auto value = [&](const char* key) { return run.contains(key) && run[key].is_number() ? run[key].get<double>() : NAN; };
-  body += row({"particles", run.contains("particles") ? run["particles"].dump() : ""});
+  body += row({"particles", particle_sentence(run)});
   body += row({"steps", number(value("steps"))});
   body += row({"simulated time, s", number(value("simulated_time"))});
   body += row({"setup, s", number(value("setup_seconds"))});
@@ -94,11 +103,13 @@ std::string run_body(const fs::path& dir) {
   body += "</table>\n<h2>Figures</h2>\n";
   run_plot_script("plot_run.py", dir);
   for (const auto& [png, caption] : std::vector<std::pair<const char*, const char*>>{
+           {"particles.png", "the particles at four times, coloured by phase and by speed"},
            {"gauges.png", "free-surface elevation at the wave gauges"},
            {"surge_front.png", "dam-break surge front and water height at the wall against Martin & Moyce (1952)"},
            {"bodies.png", "bodies: position, velocity, fluid force and angle"},
            {"profiles.png", "free-surface profiles"},
-           {"slide.png", "deformable slides: front, thickness and outline"}})
+           {"slide.png", "deformable slides: front, thickness and outline"},
+           {"slide_shapes.png", "the slide's upper surface against the measured shapes"}})
     body += figure(dir / png, caption);
   body += "<h2>Method</h2>\n<table>\n";
   if (run.contains("scene")) {
