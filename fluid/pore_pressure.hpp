@@ -19,7 +19,7 @@
 // Chosen against the water phase's own pressure interpolated at the sediment particle: inside a slide thicker than
 // the kernel radius a sediment particle has no water neighbours to interpolate from, so that alternative needs the
 // hydrostatic head anyway below the slide's first rows.
-// What it leaves out (README, "Slides under water"): pore pressure that differs from hydrostatic, the excess pore
+// What it leaves out (docs/slides-under-water.md): pore pressure that differs from hydrostatic, the excess pore
 // pressure of a contracting or dilating grain skeleton and its diffusion (Pailha & Pouliquen 2009, J. Fluid Mech.
 // 633, 115-135; Iverson 2000), consolidation, and the waves' dynamic pressure inside the slide.
 #include <algorithm>

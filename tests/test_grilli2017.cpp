@@ -2,7 +2,7 @@
 // measured upper surfaces (slide_shapes.csv, coupling/slide_shape_error.hpp) at experiment times 0.17, 0.32, 0.47 and
 // 0.62 s (model time + 0.12 s), at two spacings, with both slide models; the ctest label `long`.
 // Issue 29's goal is the front within 10 % of its travel and the surfaces within 1 cm rms; it is NOT met yet (the
-// figures are printed, README "Slides under water"). What these tests hold: the slides move down the slope under water
+// figures are printed, docs/slides-under-water.md). What these tests hold: the slides move down the slope under water
 // (on the total pressure the granular slide moved 1.4 mm in 2 s, and the rigid triangle did not move; below).
 #include <gtest/gtest.h>
 
