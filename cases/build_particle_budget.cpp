@@ -87,11 +87,11 @@ void check_particle_budget(SceneBuild& b) {
                                                      n, b.dp));
   const auto limit = read_memory_limit();
   const double bytes = program_resident_bytes() + particle_state_bytes(n);
-  if (limit && bytes > limit->bytes)
+  if (limit && bytes > limit->total_bytes())
     throw SceneError("particle_spacing",
                      fmt::format("the scene would make about {:.3g} particles at dp = {} m, whose arrays alone need "
                                  "about {}, more than the {} available ({}); use a larger particle_spacing",
-                                 n, b.dp, size_text(bytes), size_text(limit->bytes), limit->source));
+                                 n, b.dp, size_text(bytes), size_text(limit->total_bytes()), limit->source));
 }
 
 // Once the particles are made and their neighbours listed: the run's peak memory (cases/particle_budget.hpp), what
@@ -111,12 +111,12 @@ void check_run_memory(SceneBuild& b) {
   in.body_steps = dt > 0.0 ? double(b.scene->bodies.size()) * (settling + b.scene->end_time) / dt : 0.0;
   b.scene->memory_estimate_bytes = program_resident_bytes() + run_memory_bytes(in);
   const auto limit = read_memory_limit();
-  if (limit && b.scene->memory_estimate_bytes > limit->bytes)
+  if (limit && b.scene->memory_estimate_bytes > limit->total_bytes())
     throw SceneError("particle_spacing",
                      fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak, "
                                  "more than the {} available ({}); use a larger particle_spacing",
                                  sim.particles.real_count(), b.dp, size_text(b.scene->memory_estimate_bytes),
-                                 size_text(limit->bytes), limit->source));
+                                 size_text(limit->total_bytes()), limit->source));
 }
 
 }  // namespace slide::cases

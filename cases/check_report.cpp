@@ -16,7 +16,7 @@ namespace {
 std::string memory_available() {
   try {
     if (const auto limit = memory_limit())
-      return fmt::format(" of {:.0f} MB available ({})", limit->bytes / 1e6, limit->source);
+      return fmt::format(" of {:.0f} MB available ({})", limit->total_bytes() / 1e6, limit->source);
   } catch (const std::invalid_argument&) {  // refused with its message before the scene was built
   }
   return "";

@@ -88,7 +88,7 @@ double parse_size(const std::string& text) {
 
 std::optional<MemoryLimit> memory_limit() {
   if (const char* env = std::getenv("SLIDE_MEMORY_LIMIT"))
-    return MemoryLimit{parse_size(env), "SLIDE_MEMORY_LIMIT"};
+    return MemoryLimit{parse_size(env), "SLIDE_MEMORY_LIMIT", true, 0.0};
   std::optional<MemoryLimit> best;
   if (const auto kb = read_number_after("/proc/meminfo", "MemAvailable:"))
     best = MemoryLimit{*kb * 1024.0, "MemAvailable in /proc/meminfo"};
@@ -101,6 +101,7 @@ std::optional<MemoryLimit> memory_limit() {
     const double headroom = std::strtod(max_text.c_str(), nullptr) - current;
     if (headroom > 0 && (!best || headroom < best->bytes)) best = MemoryLimit{headroom, "the cgroup's memory.max"};
   }
+  if (best) best->resident_when_read = resident_bytes_now();
   return best;
 }
 

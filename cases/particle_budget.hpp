@@ -39,6 +39,13 @@ double resident_bytes_now();
 struct MemoryLimit {
   double bytes = 0.0;
   std::string source;  // where the figure comes from, for messages
+  // SLIDE_MEMORY_LIMIT is the process's whole share (a job's allocation); MemAvailable and a cgroup's headroom are what
+  // is free beyond what the process held when they were read (resident_when_read).
+  bool whole_process = false;
+  double resident_when_read = 0.0;
+  // The limit as a total for this process, to hold a whole-run estimate against (found in review: comparing the
+  // estimate with the headroom read after the particles were made counted them twice).
+  double total_bytes() const { return whole_process ? bytes : bytes + resident_when_read; }
 };
 
 // The memory a run may use: the environment's SLIDE_MEMORY_LIMIT (bytes, or with a k/M/G suffix: a cluster job's

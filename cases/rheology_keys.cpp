@@ -1,5 +1,7 @@
 #include "cases/rheology_keys.hpp"
 
+#include <fmt/format.h>
+
 namespace slide::cases {
 namespace {
 
@@ -83,9 +85,9 @@ Rheology read_rheology(RheologyModel model, const YAML::Node& r, const std::stri
     case RheologyModel::granular:
       // mu(I) rises from mu_s at rest to mu_2 as I grows; mu_2 < mu_s would make faster flow weaker.
       if (r["mu_2"].as<double>() < r["mu_s"].as<double>())
-        throw SceneError(path + ".mu_2", "is " + r["mu_2"].as<std::string>() + ", below mu_s (" +
-                                             r["mu_s"].as<std::string>() +
-                                             "): mu(I) rises from mu_s at rest to mu_2, so mu_2 >= mu_s");
+        throw SceneError(path + ".mu_2", fmt::format("is {:g}, below mu_s ({:g}): mu(I) rises from mu_s at rest to "
+                                                     "mu_2, so mu_2 >= mu_s",
+                                                     r["mu_2"].as<double>(), r["mu_s"].as<double>()));
       return GranularMuI{r["mu_s"].as<double>(),           r["mu_2"].as<double>(),
                          r["i0"].as<double>(),             r["grain_diameter"].as<double>(),
                          r["grain_density"].as<double>(),  r["max_viscosity"].as<double>(),

@@ -87,11 +87,14 @@ TEST(Faults, AFullDiskIsNamedInOneLine) {
   fs::create_directories(disk);
   if (run_command("mount -t tmpfs -o size=200k tmpfs " + disk.string()).exit_code != 0)
     GTEST_SKIP() << "cannot mount a small file system here";
+  struct Unmount {  // whatever the checks below do, the small disk does not stay mounted
+    fs::path at;
+    ~Unmount() { run_command("umount " + at.string()); }
+  } unmount{disk};
   const auto r = run_command(slide_binary() + " run " + kDamBreak +
                              " --quiet --threads 1 --set end_time=0.05 --set particle_spacing=0.005 --out " +
                              (disk / "run").string());
   expect_one_line_for_a_failed_snapshot(r, "No space left on device", disk / "run");
-  run_command("umount " + disk.string());
 }
 
 TEST(Faults, ARunKilledWithSigkillLeavesEveryFinishedFileReadable) {

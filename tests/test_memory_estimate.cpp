@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "cases/particle_budget.hpp"
 #include "tests/cli_helpers.hpp"
 
 namespace slide::testing {
@@ -43,6 +44,25 @@ void expect_bound(const Measured& m) {
   EXPECT_LE(m.estimate_mb, 1.15 * m.peak_mb);
   // The same estimate: it differs only by each process's own footprint at its start (a few hundred kB).
   EXPECT_NEAR(m.checked_mb, m.estimate_mb, 0.5);
+}
+
+// The estimate is a total for the process; MemAvailable and a cgroup's headroom are what is free beyond what the
+// process held when read, so the two are compared after adding that back (found in review: the particles, made by
+// then, were counted twice). SLIDE_MEMORY_LIMIT is a whole job's share.
+TEST(MemoryEstimate, AHeadroomLimitCountsWhatTheProcessHeldWhenRead) {
+  EXPECT_EQ((cases::MemoryLimit{100e6, "MemAvailable", false, 30e6}.total_bytes()), 130e6);
+  EXPECT_EQ((cases::MemoryLimit{100e6, "SLIDE_MEMORY_LIMIT", true, 30e6}.total_bytes()), 100e6);
+  setenv("SLIDE_MEMORY_LIMIT", "2G", 1);
+  const auto job = cases::memory_limit();
+  unsetenv("SLIDE_MEMORY_LIMIT");
+  ASSERT_TRUE(job);
+  EXPECT_TRUE(job->whole_process);
+  EXPECT_EQ(job->total_bytes(), 2e9);
+  if (const auto free = cases::memory_limit()) {  // where /proc/meminfo or a cgroup can be read
+    EXPECT_FALSE(free->whole_process);
+    EXPECT_GT(free->resident_when_read, 0.0);
+    EXPECT_EQ(free->total_bytes(), free->bytes + free->resident_when_read);
+  }
 }
 
 const std::string kShort = "--set end_time=0.02 --set output.snapshot_interval=0.01 --set method.settling_time=0.02";

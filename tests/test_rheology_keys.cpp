@@ -88,7 +88,7 @@ TEST(RheologyKeys, GranularMuTwoBelowMuSIsRefusedNamingIt) {
     FAIL() << "mu_2 < mu_s accepted";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("bodies[0].rheology.mu_2"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("below mu_s (0.5)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is 0.3, below mu_s (0.5)"), std::string::npos) << e.what();
   }
 }
 

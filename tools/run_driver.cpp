@@ -315,6 +315,7 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
   }
   run.header = h;
   if (h.settling) run.settling_from = std::exchange(run.resumed_from, std::nullopt);
+  run.header.settling = false;  // the run's own checkpoints, once it runs, are not the settling's (found in review)
   return run;
 }
 
@@ -340,6 +341,7 @@ class CheckpointObserver : public StepObserver<2> {
     Checkpoint c{run_.header, state.bytes()};
     c.header.time = sim_.time();
     c.header.step = sim_.step_count();
+    c.header.settling = false;
     write_checkpoint(run_.out, c);
   }
   void restore(StateReader& in) { in.get(next_); }
@@ -397,9 +399,14 @@ std::optional<int> settle_before_the_run(PreparedRun& run, const RunArguments& a
   if (scene.pending_settling) {
     Settling settling(sim, *scene.pending_settling);
     if (run.settling_from) {
-      StateReader in(run.settling_from->state);
-      sim.restore_state(in);
-      settling.restore_state(in);
+      try {
+        StateReader in(run.settling_from->state);
+        sim.restore_state(in);
+        settling.restore_state(in);
+      } catch (const std::runtime_error& e) {
+        std::cerr << "slide: --resume " << run.out.string() << ": " << e.what() << "; nothing was run\n";
+        return 2;
+      }
     }
     InterruptWatch interrupt(std::numeric_limits<double>::infinity());
     ProgressLine progress(Clock::now(), settling.duration(), sim, "settling: ");
@@ -436,14 +443,16 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
-  // From here on SIGINT and SIGTERM stop the run where it is, building, settling or stepping: before the next step,
-  // with a checkpoint (exit 128 + signal). A signal while the scene is built stops it before its first step.
+  std::optional<PreparedRun> run = args.resume.empty() ? prepare_new_run(args) : prepare_resumed_run(args);
+  if (!run) return 2;
+  // From here on SIGINT and SIGTERM stop the run where it is, settling or stepping: before the next step, with a
+  // checkpoint (exit 128 + signal). While the scene is built they end the process at once, as by default: nothing
+  // has been computed that a checkpoint would keep, and the build does not look at a flag (found in review: a build
+  // that took minutes could not be stopped but by SIGKILL).
   interrupted = 0;
   using Handler = void (*)(int);
   const Handler previous_sigint = std::signal(SIGINT, on_stop_signal);
   const Handler previous_sigterm = std::signal(SIGTERM, on_stop_signal);
-  std::optional<PreparedRun> run = args.resume.empty() ? prepare_new_run(args) : prepare_resumed_run(args);
-  if (!run) return 2;
   const std::unique_ptr<cases::Scene>& scene = run->scene;
   const std::filesystem::path& out = run->out;
   auto& sim = *scene->simulation;
