@@ -319,6 +319,15 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
   return run;
 }
 
+// checkpoint.bin of the simulation's state at its time and step, with `state` after it; taken while settling or not.
+void write_state_checkpoint(const PreparedRun& run, const Simulation<2>& sim, const StateWriter& state, bool settling) {
+  Checkpoint c{run.header, state.bytes()};
+  c.header.time = sim.time();
+  c.header.step = sim.step_count();
+  c.header.settling = settling;
+  write_checkpoint(run.out, c);
+}
+
 // Writes checkpoint.bin at the scene's interval of simulated time (after the outputs have sampled the step), and on
 // demand (an interrupted run).
 class CheckpointObserver : public StepObserver<2> {
@@ -338,11 +347,7 @@ class CheckpointObserver : public StepObserver<2> {
     sim_.save_state(state);
     outputs_.save_state(state);
     state.put(next_);
-    Checkpoint c{run_.header, state.bytes()};
-    c.header.time = sim_.time();
-    c.header.step = sim_.step_count();
-    c.header.settling = false;
-    write_checkpoint(run_.out, c);
+    write_state_checkpoint(run_, sim_, state, false);
   }
   void restore(StateReader& in) { in.get(next_); }
 
@@ -360,11 +365,7 @@ int stop_while_settling(const PreparedRun& run, const Simulation<2>& sim, const 
   StateWriter state;
   sim.save_state(state);
   settling.save_state(state);
-  Checkpoint c{run.header, state.bytes()};
-  c.header.time = sim.time();
-  c.header.step = sim.step_count();
-  c.header.settling = true;
-  write_checkpoint(run.out, c);
+  write_state_checkpoint(run, sim, state, true);
   const int signal = interrupted;
   const std::string msg = fmt::format(
       "interrupted by {} while the water settled, at {:.6g} of its {:.6g} s (step {}); checkpoint written: continue "
