@@ -6,7 +6,6 @@ namespace slide::cases {
 namespace {
 
 using S = Schema;
-constexpr double inf = Schema::inf;
 
 // The yield term's regularisation and the power-law cap, shared by the models with a yield stress. Defaults: see
 // the case files and tests/test_hb_poiseuille.cpp for the measured effect of the regularisation on the answer.
@@ -16,10 +15,10 @@ std::vector<std::pair<std::string, Schema>> yield_keys() {
                                    "bi_viscosity, min(tau_y / g, max_viscosity) (fluid/rheology/regularisation.hpp)",
                                    regularisation_names.names(), "papanastasiou")},
       {"papanastasiou_exponent", S::number("Papanastasiou's m: the viscosity at rest is tau_y m", "s", 1000.0, 0.0,
-                                           inf, true)},
-      {"max_viscosity", S::number("cap of the yield term (bi_viscosity) or of eta (granular)", "Pa s", 1.0e4, 0.0, inf, true)},
+                                           S::inf, true)},
+      {"max_viscosity", S::number("cap of the yield term (bi_viscosity) or of eta (granular)", "Pa s", 1.0e4, 0.0, S::inf, true)},
       {"max_power_law_viscosity", S::number("cap of the power-law term K g^(n-1) for n < 1 (it diverges at rest)",
-                                            "Pa s", 1.0e4, 0.0, inf, true)},
+                                            "Pa s", 1.0e4, 0.0, S::inf, true)},
   };
 }
 
@@ -39,31 +38,31 @@ Regularisation read_regularisation(const YAML::Node& r) {
 
 Schema rheology_schema() {
   auto newtonian = S::map("viscosity independent of the shear rate",
-                          {{"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf)}});
+                          {{"viscosity", S::number("dynamic viscosity", "Pa s", 1.0e-3, 0.0, S::inf)}});
   auto herschel_bulkley = S::map(
       "Herschel-Bulkley: eta = K g^(n-1) + tau_y / g, regularised (fluid/rheology/herschel_bulkley.hpp)",
-      with({{"yield_stress", S::number("yield stress tau_y", "Pa", 0.0, 0.0, inf)},
-            {"consistency", S::number("consistency K", "Pa s^n", std::nullopt, 0.0, inf)},
-            {"flow_index", S::number("flow index n (1: Bingham)", "", 1.0, 0.0, inf, true)}},
+      with({{"yield_stress", S::number("yield stress tau_y", "Pa", 0.0, 0.0, S::inf)},
+            {"consistency", S::number("consistency K", "Pa s^n", std::nullopt, 0.0, S::inf)},
+            {"flow_index", S::number("flow index n (1: Bingham)", "", 1.0, 0.0, S::inf, true)}},
            yield_keys()));
   auto mohr_coulomb = S::map(
       "Herschel-Bulkley with a pressure-dependent yield stress tau_y = c + p tan(phi) (fluid/rheology/mohr_coulomb.hpp)",
-      with({{"cohesion", S::number("cohesion c", "Pa", 0.0, 0.0, inf)},
+      with({{"cohesion", S::number("cohesion c", "Pa", 0.0, 0.0, S::inf)},
             {"friction_angle", S::number("internal friction angle phi", "deg", std::nullopt, 0.0, 90.0, false, true)},
-            {"consistency", S::number("consistency K", "Pa s^n", 0.0, 0.0, inf)},
-            {"flow_index", S::number("flow index n", "", 1.0, 0.0, inf, true)}},
+            {"consistency", S::number("consistency K", "Pa s^n", 0.0, 0.0, S::inf)},
+            {"flow_index", S::number("flow index n", "", 1.0, 0.0, S::inf, true)}},
            yield_keys()));
   // Defaults: Jop, Forterre & Pouliquen (2006)'s glass beads.
   auto granular = S::map(
       "dense granular flow, mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1), eta = mu(I) p / g (Jop, Forterre & Pouliquen "
       "2006; fluid/rheology/granular_mu_i.hpp); defaults are their glass beads",
-      {{"mu_s", S::number("static friction coefficient", "", 0.38, 0.0, inf)},
-       {"mu_2", S::number("limiting friction coefficient", "", 0.64, 0.0, inf)},
-       {"i0", S::number("inertial number scale I0", "", 0.279, 0.0, inf, true)},
-       {"grain_diameter", S::number("grain diameter d", "m", 0.53e-3, 0.0, inf, true)},
-       {"grain_density", S::number("grain density rho_s", "kg/m^3", 2450.0, 0.0, inf, true)},
-       {"max_viscosity", S::number("cap of eta (regularisation at rest)", "Pa s", 1.0e4, 0.0, inf, true)},
-       {"min_viscosity", S::number("floor of eta where the pressure vanishes", "Pa s", 0.0, 0.0, inf)}});
+      {{"mu_s", S::number("static friction coefficient", "", 0.38, 0.0, S::inf)},
+       {"mu_2", S::number("limiting friction coefficient", "", 0.64, 0.0, S::inf)},
+       {"i0", S::number("inertial number scale I0", "", 0.279, 0.0, S::inf, true)},
+       {"grain_diameter", S::number("grain diameter d", "m", 0.53e-3, 0.0, S::inf, true)},
+       {"grain_density", S::number("grain density rho_s", "kg/m^3", 2450.0, 0.0, S::inf, true)},
+       {"max_viscosity", S::number("cap of eta (regularisation at rest)", "Pa s", 1.0e4, 0.0, S::inf, true)},
+       {"min_viscosity", S::number("floor of eta where the pressure vanishes", "Pa s", 0.0, 0.0, S::inf)}});
   return S::variant("rheology of the phase", "model",
                     {{"newtonian", newtonian},
                      {"herschel_bulkley", herschel_bulkley},
@@ -110,19 +109,19 @@ Schema rheology_parameters_schema() {
       if (f.first == name) return;
     fields.emplace_back(name, std::move(s));
   };
-  add("viscosity", S::number("newtonian: dynamic viscosity", "Pa s", 1.0e-3, 0.0, inf));
-  add("yield_stress", S::number("herschel_bulkley: yield stress tau_y", "Pa", 0.0, 0.0, inf));
-  add("consistency", S::number("herschel_bulkley, mohr_coulomb: consistency K", "Pa s^n", 0.0, 0.0, inf));
-  add("flow_index", S::number("herschel_bulkley, mohr_coulomb: flow index n", "", 1.0, 0.0, inf, true));
-  add("cohesion", S::number("mohr_coulomb: cohesion c", "Pa", 0.0, 0.0, inf));
+  add("viscosity", S::number("newtonian: dynamic viscosity", "Pa s", 1.0e-3, 0.0, S::inf));
+  add("yield_stress", S::number("herschel_bulkley: yield stress tau_y", "Pa", 0.0, 0.0, S::inf));
+  add("consistency", S::number("herschel_bulkley, mohr_coulomb: consistency K", "Pa s^n", 0.0, 0.0, S::inf));
+  add("flow_index", S::number("herschel_bulkley, mohr_coulomb: flow index n", "", 1.0, 0.0, S::inf, true));
+  add("cohesion", S::number("mohr_coulomb: cohesion c", "Pa", 0.0, 0.0, S::inf));
   add("friction_angle", S::number("mohr_coulomb: internal friction angle phi", "deg", 30.0, 0.0, 90.0, false, true));
   for (auto& f : yield_keys()) add(f.first, f.second);
-  add("mu_s", S::number("granular: static friction coefficient", "", 0.38, 0.0, inf));
-  add("mu_2", S::number("granular: limiting friction coefficient", "", 0.64, 0.0, inf));
-  add("i0", S::number("granular: inertial number scale I0", "", 0.279, 0.0, inf, true));
-  add("grain_diameter", S::number("granular: grain diameter d", "m", 0.53e-3, 0.0, inf, true));
-  add("grain_density", S::number("granular: grain density rho_s", "kg/m^3", 2450.0, 0.0, inf, true));
-  add("min_viscosity", S::number("granular: floor of eta where the pressure vanishes", "Pa s", 0.0, 0.0, inf));
+  add("mu_s", S::number("granular: static friction coefficient", "", 0.38, 0.0, S::inf));
+  add("mu_2", S::number("granular: limiting friction coefficient", "", 0.64, 0.0, S::inf));
+  add("i0", S::number("granular: inertial number scale I0", "", 0.279, 0.0, S::inf, true));
+  add("grain_diameter", S::number("granular: grain diameter d", "m", 0.53e-3, 0.0, S::inf, true));
+  add("grain_density", S::number("granular: grain density rho_s", "kg/m^3", 2450.0, 0.0, S::inf, true));
+  add("min_viscosity", S::number("granular: floor of eta where the pressure vanishes", "Pa s", 0.0, 0.0, S::inf));
   return S::map("rheology parameters of a deformable slide, for the model its `model` key names (the keys of the "
                 "others are ignored); fluid/rheology/*.hpp",
                 std::move(fields), false);

@@ -16,7 +16,6 @@ namespace slide::cases {
 namespace {
 
 using S = Schema;
-constexpr double inf = std::numeric_limits<double>::infinity();
 
 Schema point_list(std::string doc, std::size_t min_points) {
   return S::list(std::move(doc), S::vector("a point [x, y]", "m", 2, std::nullopt), min_points);
@@ -30,7 +29,7 @@ Schema basal_friction_angle_schema(const std::string& extra = "") {
 Schema phase_schema() {
   return S::map("one phase of fluid particles",
                 {{"name", S::text("name that regions refer to", std::nullopt)},
-                 {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, inf, true)},
+                 {"density", S::number("reference density", "kg/m^3", 1000.0, 0.0, S::inf, true)},
                  {"rheology", rheology_schema()},
                  {"basal_friction_angle", basal_friction_angle_schema()}});
 }
@@ -93,10 +92,10 @@ Schema body_schema() {
                               "apex + (s leg, 0), apex + (s leg, -leg), s = +1 for a slope descending towards +x",
                               {{"apex", S::vector("the upper vertex on the slope", "m", 2, std::nullopt)},
                                {"leg", S::number("length of the horizontal and vertical legs", "m", std::nullopt, 0.0,
-                                                 inf, true)},
+                                                 S::inf, true)},
                                {"toward", S::choice("the way the slope descends", {"+x", "-x"}, "+x")}})}})},
-       {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, inf)},
-       {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, inf)},
+       {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, S::inf)},
+       {"mass", S::number("mass per unit width; 0 = density times area", "kg/m", 0.0, 0.0, S::inf)},
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
        {"rheology", rheology_parameters_schema()},
@@ -112,7 +111,7 @@ Schema body_schema() {
        {"locked", S::list("components held fixed (free motion)",
                           S::choice("component", locked_component_names.names(), std::nullopt))},
        {"release_time",
-        S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, inf)},
+        S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, S::inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
                                      "put while the water settles; free first moves a rigid body lighter than water "
                                      "up or down to its draft below the still-water level (Archimedes on its outline, "
@@ -130,9 +129,9 @@ Schema body_schema() {
              {"file", S::text("series: CSV file, relative to the scene file", "")},
              {"body", S::text("series: rows whose body column equals this (default: this body's name)", "")},
              {"direction", S::vector("ln_cosh: direction of travel", "", 2, std::vector<double>{1.0, -1.0})},
-             {"s0", S::number("ln_cosh: length scale s0 = u_t^2 / a0", "m", 1.0, 0.0, inf, true)},
-             {"t0", S::number("ln_cosh: time scale t0 = u_t / a0", "s", 1.0, 0.0, inf, true)},
-             {"start_time", S::number("ln_cosh: time the motion starts", "s", 0.0, 0.0, inf)}},
+             {"s0", S::number("ln_cosh: length scale s0 = u_t^2 / a0", "m", 1.0, 0.0, S::inf, true)},
+             {"t0", S::number("ln_cosh: time scale t0 = u_t / a0", "s", 1.0, 0.0, S::inf, true)},
+             {"start_time", S::number("ln_cosh: time the motion starts", "s", 0.0, 0.0, S::inf)}},
             false)}});
 }
 
@@ -155,7 +154,7 @@ Schema method_schema() {
                               std::string(to_string(MethodOptions{}.gradient)))},
        {"gamma", S::number("exponent of the equation of state (seed eq. 7)", "", 7.0, 1.0, 10.0)},
        {"sound_speed", S::number("numerical sound speed c0; 0 = sound_speed_factor sqrt(g H) of the deepest water",
-                                 "m/s", 0.0, 0.0, inf)},
+                                 "m/s", 0.0, 0.0, S::inf)},
        {"sound_speed_factor",
         S::number("c0 as a multiple of sqrt(g H) of the deepest water, where sound_speed is 0 (10: still water "
                   "compressed g H / c0^2 = 1 % at its bottom, the dam break's largest compression 3.6 %: "
@@ -195,9 +194,9 @@ Schema method_schema() {
                                    "regions settle as a fluid, their rheology starting at t = 0; deformable slides are "
                                    "held); lattice starts from the uncompressed lattice",
                                    initial_state_names.names(), std::string(to_string(default_initial_state)))},
-       {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, inf, true)},
+       {"settling_time", S::number("settled start: damped settling time before t = 0", "s", 1.0, 0.0, S::inf, true)},
        {"settling_damping",
-        S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, inf, true)},
+        S::number("settled start: velocity damping rate while settling", "1/s", 30.0, 0.0, S::inf, true)},
        {"neighbor_skin",
         S::number("neighbour-list skin; the list is rebuilt when a particle moved half of it", "dp", 0.3, 0.0, 1.0)},
        {"viscous_scheme",
@@ -219,16 +218,16 @@ Schema time_step_schema() {
       {{"cfl", S::number("acoustic Courant number", "", 0.2, 0.0, 1.0, true, false)},
        {"viscous_number", S::number("viscous diffusion number", "", 0.1, 0.0, 0.5, true, false)},
        {"force_number", S::number("force (acceleration) number", "", 0.25, 0.0, 1.0, true, false)},
-       {"max", S::number("largest time step", "s", 1.0e-3, 0.0, inf, true, false)}},
+       {"max", S::number("largest time step", "s", 1.0e-3, 0.0, S::inf, true, false)}},
       false);
 }
 
 Schema checks_schema() {
   return S::map("stability checks after every step; a failed check stops the run with exit 3",
                 {{"max_number_density_ratio",
-                  S::number("n / n0 above this is a number-density collapse", "", 1.5, 1.0, inf, true, false)},
+                  S::number("n / n0 above this is a number-density collapse", "", 1.5, 1.0, S::inf, true, false)},
                  {"max_speed_over_c0",
-                  S::number("a fluid speed above this many c0 is a blow-up", "", 1.0, 0.0, inf, true, false)},
+                  S::number("a fluid speed above this many c0 is a blow-up", "", 1.0, 0.0, S::inf, true, false)},
                  {"allow_uncontained_fluid",
                   S::boolean("accept fluid with no wall or body below it along gravity (it falls out of the domain "
                              "and is taken out of the run); without it such a scene is refused on its region",
@@ -240,16 +239,16 @@ Schema output_schema() {
   return S::map(
       "what is written to the output folder",
       {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
-       {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, inf)},
+       {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, S::inf)},
        {"gauge_interval", S::number("time between gauge and diagnostic samples (gauges.csv, surge_front.csv, "
-                                    "slide_front.csv, velocity_profile.csv)", "s", 0.005, 0.0, inf, true, false)},
+                                    "slide_front.csv, velocity_profile.csv)", "s", 0.005, 0.0, S::inf, true, false)},
        {"slide_outline_times", S::vector("times of the deformable slides' upper surfaces in slide_outline.csv, each "
                                          "taken at the first step at or after it", "s", -1, std::vector<double>{}, 0.0)},
-       {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, inf, true, false)},
+       {"body_interval", S::number("time between bodies.csv rows", "s", 0.001, 0.0, S::inf, true, false)},
        {"checkpoint_interval",
         S::number("simulated time between checkpoints (checkpoint.bin, which slide run --resume DIR continues, bit for "
                   "bit); 0 = none at an interval (an interrupted run, SIGINT or SIGTERM, always writes one)",
-                  "s", 0.0, 0.0, inf)}},
+                  "s", 0.0, 0.0, S::inf)}},
       false);
 }
 
@@ -266,7 +265,7 @@ Schema profiles_schema() {
       {{"times", S::vector("times of the profiles", "s", -1, std::vector<double>{}, 0.0)},
        {"x_min", S::number("first x", "m", 0.0)},
        {"x_max", S::number("last x", "m", 0.0)},
-       {"spacing", S::number("distance between points; 0 = dp", "m", 0.0, 0.0, inf)}},
+       {"spacing", S::number("distance between points; 0 = dp", "m", 0.0, 0.0, S::inf)}},
       false);
 }
 
@@ -292,7 +291,7 @@ Schema surge_schema() {
        {"wall_face_x", S::number("x of the wall face the column stands against", "m", 0.0)},
        {"floor_y", S::number("y of the floor face", "m", 0.0)},
        {"column_width",
-        S::number("initial column width a for Z = front / a and T = t sqrt(2 g / a); 0 = omit", "m", 0.0, 0.0, inf)}},
+        S::number("initial column width a for Z = front / a and T = t sqrt(2 g / a); 0 = omit", "m", 0.0, 0.0, S::inf)}},
       false);
 }
 
@@ -304,7 +303,7 @@ Schema velocity_profile_schema() {
       {{"enabled", S::boolean("write velocity_profile.csv", false)},
        {"y_origin", S::number("y of one bin edge", "m", 0.0)},
        {"bin", S::number("bin height; 0 = the lattice's row spacing (dp, or 0.9306 dp on the hexagonal lattice)",
-                         "m", 0.0, 0.0, inf)}},
+                         "m", 0.0, 0.0, S::inf)}},
       false);
 }
 
@@ -329,7 +328,7 @@ Schema make_schema() {
        {"description", S::text("free text", "")},
        {"dimension",
         S::integer("spatial dimension (scenes are 2-D for now; the solver is built for 2 and 3)", 2L, 2L, 2L)},
-       {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, inf, true, false)},
+       {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, S::inf, true, false)},
        {"lattice", S::choice("lattice the particles start on, one particle per dp^2 either way: square, or "
                              "hexagonal (nearest spacing 1.0746 dp), the stable packing that still water needs to "
                              "stay at rest; with hexagonal, walls are cut from the same lattice (layers unused), "
@@ -337,7 +336,7 @@ Schema make_schema() {
                              "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
                              "lies dp/2 below the lowest point of the first body",
                              lattice_kind_names.names(), std::string(to_string(MethodOptions{}.lattice)))},
-       {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, inf, true, false)},
+       {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, S::inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
        {"domain", domain_schema()},
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},

@@ -11,11 +11,13 @@
 
 namespace slide::testing {
 
+inline constexpr double g = 9.81;  // m/s^2, the test scenes' gravity
+
 // The scene of `yaml`, written to a fresh folder named `name`.
 inline std::unique_ptr<cases::Scene> build_scene_text(const std::string& name, const std::string& yaml) {
   const auto dir = fresh_directory(name);
   write_file(dir / "s.yaml", yaml);
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), name);
 }
 
 inline std::unique_ptr<cases::Scene> load_shipped_scene(const std::string& name,

@@ -23,7 +23,6 @@
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81;
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 TEST(BasalFriction, CoefficientOfTheAngle) {

@@ -10,11 +10,11 @@
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/pore_pressure.hpp"
 #include "fluid/water_surface.hpp"
+#include "tests/scene_runner.hpp"
 
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81;
 const double none = -std::numeric_limits<double>::infinity();
 
 // Water particles (phase 0) on a square lattice of spacing dp filling [x0, x1] x [y0, y1] at their centres.

@@ -21,7 +21,6 @@
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81;
 
 struct RestingRun {
   Vec<2> fluid = Vec<2>::Zero();    // N/m, time mean over the run of the fluid's force on the body

@@ -19,7 +19,6 @@
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81;
 
 // A 0.2 m x 0.1 m block of 1950 kg/m^3 on the floor of a 0.8 m tank under 0.2 m of still water, dp = 0.02 m,
 // Bingham with the given yield stress and consistency; the water settles around the held block for 0.5 s.

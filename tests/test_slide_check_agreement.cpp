@@ -21,7 +21,6 @@
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81;
 
 struct LayerRun {
   std::string criterion;      // slide check's

@@ -19,7 +19,6 @@
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81;
 
 // A slope from (0, L sin beta) down to its toe, then a floor and a far wall; a block 0.2 m along the slope and 0.1 m
 // thick, its upper end 0.35 m down from the top: Bingham (tau_y 20 kPa, K 1 Pa s, 2000 kg/m^3), which its weight

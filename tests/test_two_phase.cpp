@@ -24,12 +24,6 @@ namespace {
 
 constexpr std::uint8_t water = 0, sand = 1;
 
-std::unique_ptr<cases::Scene> scene_from(const std::string& name, const std::string& yaml) {
-  const auto dir = fresh_directory(name);
-  write_file(dir / "s.yaml", yaml);
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), name);
-}
-
 std::map<std::uint8_t, std::size_t> fluid_count_by_phase(const Particles<2>& P) {
   std::map<std::uint8_t, std::size_t> n;
   for (std::size_t i = 0; i < P.real_count(); ++i)
@@ -111,7 +105,7 @@ struct LayersResult {
 };
 
 LayersResult run_layers() {
-  auto scene = scene_from("two_layers", layers_scene());
+  auto scene = build_scene_text("two_layers", layers_scene());
   const auto& opt = scene->simulation->options;
   const double dp = opt.dp, g = -opt.gravity[1], h = row_spacing(LatticeKind::hexagonal, dp);
   const auto& P0 = scene->simulation->particles;
@@ -265,7 +259,7 @@ struct DamBreakRun {
 };
 
 DamBreakRun run_submerged_dam_break(double dp) {
-  auto scene = scene_from("submerged_dam_break_" + std::to_string(int(std::lround(dp * 1000))), dam_break_scene(dp));
+  auto scene = build_scene_text("submerged_dam_break_" + std::to_string(int(std::lround(dp * 1000))), dam_break_scene(dp));
   const double re = scene->simulation->options.re_over_dp * dp;
   const auto counts0 = fluid_count_by_phase(scene->simulation->particles);
   EXPECT_EQ(counts0.size(), 2u);

@@ -28,13 +28,7 @@
 namespace slide::testing {
 namespace {
 
-constexpr double g = 9.81, rho = 1000.0;
-
-std::unique_ptr<cases::Scene> scene_from(const std::string& name, const std::string& yaml) {
-  const auto dir = fresh_directory(name);
-  write_file(dir / "s.yaml", yaml);
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), name);
-}
+constexpr double rho = 1000.0;
 
 std::string num(double v) {
   char b[64];
@@ -156,7 +150,7 @@ struct PlaneFit {
 
 TankFigures run_tank(const std::string& model, double dp, double a_over_g, std::string lattice = "") {
   if (lattice.empty()) lattice = lattice_for(model);
-  auto scene = scene_from("wall_tank", tank_scene(model, dp, -a_over_g * g, lattice));
+  auto scene = build_scene_text("wall_tank", tank_scene(model, dp, -a_over_g * g, lattice));
   const double L = scene->fluid_count * dp * dp / tank_width;
   const TiltedHydrostatic exact{Vec<2>(-a_over_g * g, -g), 0.0, tank_width, L, rho};
   const double scale = rho * g * L;
@@ -271,7 +265,7 @@ lattice: square
 walls:
   - {name: tank, points: [[0, 0.3], [0, 0], [0.3, 0], [0.3, 0.3]]}
 )";
-  auto scene = scene_from("wall_column", yaml);
+  auto scene = build_scene_text("wall_column", yaml);
   const double scale = rho * g * column_h;
   const auto& P0 = scene->simulation->particles;
   std::map<std::uint32_t, Vec<2>> start;

@@ -53,19 +53,19 @@ pid_t spawn_run(const std::filesystem::path& program, const Sweep& s, const Swee
   return pid;
 }
 
-volatile std::sig_atomic_t interrupted = 0;
-extern "C" void on_interrupt(int) { interrupted = 1; }
+volatile std::sig_atomic_t sweep_interrupted = 0;
+extern "C" void on_sweep_interrupt(int) { sweep_interrupted = 1; }
 
-// SIGINT and SIGTERM set `interrupted` for as long as it lives, without SA_RESTART, so that waitpid returns to the
+// SIGINT and SIGTERM set `sweep_interrupted` for as long as it lives, without SA_RESTART, so that waitpid returns to the
 // loop; the earlier handlers come back after.
 class InterruptHandlers {
  public:
   InterruptHandlers() {
     struct sigaction a {};
-    a.sa_handler = on_interrupt;
+    a.sa_handler = on_sweep_interrupt;
     sigemptyset(&a.sa_mask);
     a.sa_flags = 0;
-    interrupted = 0;
+    sweep_interrupted = 0;
     sigaction(SIGINT, &a, &previous_int_);
     sigaction(SIGTERM, &a, &previous_term_);
   }
@@ -107,11 +107,11 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
   while (next < pending.size() || !running.empty()) {
     // Interrupted (Ctrl-C reaches the runs too; a scheduler's SIGTERM may reach only us): the running runs are asked
     // to stop as Ctrl-C stops them (a final snapshot, exit 130), and are waited for.
-    if (interrupted && !forwarded) {
+    if (sweep_interrupted && !forwarded) {
       for (const auto& [pid, run] : running) kill(pid, SIGINT);
       forwarded = true;
     }
-    while (!interrupted && next < pending.size() && running.size() < std::size_t(jobs)) {
+    while (!sweep_interrupted && next < pending.size() && running.size() < std::size_t(jobs)) {
       const SweepRun& r = *pending[next++];
       try {
         std::filesystem::remove_all(run_folder(dir, r));  // what an unfinished attempt left
@@ -147,7 +147,7 @@ int run_pending(const Sweep& s, const std::filesystem::path& dir, int jobs, int 
     if (exit_code == 130 || exit_code == 128 + SIGINT || exit_code == 128 + SIGTERM) code = 130;
     else if (exit_code != 0 && exit_code != 2 && exit_code != 3 && code == 0) code = 1;
   }
-  return interrupted ? 130 : code;
+  return sweep_interrupted ? 130 : code;
 }
 
 int collect(const Sweep& s, const std::filesystem::path& dir) {
