@@ -329,7 +329,7 @@ void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, 
 // it holds strength_at_rest(sigma') (tau_y, c + sigma' tan(phi), mu_s sigma', nothing), and with a basal friction mu_b
 // the wall holds mu_b sigma' at its base.
 void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, SlideReport& rep) {
-  const Particles<2>& P = b.sim->particles;
+  const Particles<2>& P = b.sim->particles();
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
   rep.mass_particles = rep.particles * rep.density * b.dp * b.dp;

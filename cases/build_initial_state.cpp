@@ -109,7 +109,7 @@ void set_domain(SceneBuild& b) {
 // The kinds of a scene's particles counted (again after gates are lifted).
 void count_particles(Scene& scene) {
   scene.wall_count = scene.dummy_count = scene.fluid_count = 0;
-  for (const Kind k : scene.simulation->particles.kind) {
+  for (const Kind k : scene.simulation->particles().kind) {
     if (k == Kind::fluid) ++scene.fluid_count;
     else if (k == Kind::wall) ++scene.wall_count;
     else ++scene.dummy_count;
@@ -153,7 +153,7 @@ void refuse_flowing_water(const Scene& scene) {
 void lift_gates(Scene& scene) {
   if (scene.pending_gate_ids.empty()) return;
   Simulation<2>& sim = *scene.simulation;
-  Particles<2>& P = sim.particles;
+  Particles<2>& P = sim.particles();
   std::vector<char> is_gate(P.id_end(), 0);
   for (const std::uint32_t id : scene.pending_gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
   P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });

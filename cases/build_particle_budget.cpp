@@ -99,7 +99,7 @@ void check_particle_budget(SceneBuild& b) {
 // allocates the rest.
 void check_run_memory(SceneBuild& b) {
   const Simulation<2>& sim = *b.sim;
-  const double n = double(sim.particles.size());
+  const double n = double(sim.particles().size());
   RunMemoryInputs in;
   in.particles = n;
   in.listed_per_particle = double(sim.neighbors().total()) / std::max(1.0, n);
@@ -115,7 +115,7 @@ void check_run_memory(SceneBuild& b) {
     throw SceneError("particle_spacing",
                      fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak, "
                                  "more than the {} available ({}); use a larger particle_spacing",
-                                 sim.particles.real_count(), b.dp, size_text(b.scene->memory_estimate_bytes),
+                                 sim.particles().real_count(), b.dp, size_text(b.scene->memory_estimate_bytes),
                                  size_text(limit->total_bytes()), limit->source));
 }
 

@@ -38,7 +38,7 @@ std::string summary(const Scene& scene) {
       "end time        {} s (about {:.0f} steps at the initial dt)\n"
       "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
       "memory          about {:.1f} MB at its peak{}\n",
-      scene.name, sim.particles.real_count(), scene.fluid_count, scene.wall_count, scene.dummy_count, o.dp,
+      scene.name, sim.particles().real_count(), scene.fluid_count, scene.wall_count, scene.dummy_count, o.dp,
       o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
       scene.lattice_offset[1] != 0.0
           ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene.lattice_offset[1])

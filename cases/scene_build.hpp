@@ -82,7 +82,7 @@ struct SceneBuild {
   Vec<2> lo = Vec<2>::Zero(), hi = Vec<2>::Zero();  // bounding box of every particle as placed on the lattice
 
   FluidOptions<2>& options() { return sim->options; }
-  Particles<2>& particles() { return sim->particles; }
+  Particles<2>& particles() { return sim->particles(); }
 };
 
 // The steps, in the order build_scene runs them. Each throws SceneError naming the key at fault.

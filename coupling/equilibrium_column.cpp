@@ -82,7 +82,7 @@ ColumnRelaxation relax_column(const FluidOptions<2>& options, double density, do
   const PeriodicX period{0.0, columns * dp};
   sim.options.periodic_x = period;
   sim.options.cfl = cfl;
-  auto& P = sim.particles;
+  auto& P = sim.particles();
   // The floor's layers over one period: a longer floor's points that fall in it (they lie on the lattice columns' x
   // minus half a spacing, as a scene's floor does beside water whose columns start at its end).
   const double floor_reach = (columns + 2) * dp;

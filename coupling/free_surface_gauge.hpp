@@ -45,7 +45,7 @@ double water_edge_along(const Simulation<D>& sim, const Vec<D>& origin, const Ve
 template <int D>
 double free_surface_elevation(const Simulation<D>& sim, const Vec<D>& gauge_point) {
   constexpr int up = D - 1;
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const double re = sim.re();
   double top = -std::numeric_limits<double>::infinity(), bottom = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < P.size(); ++i) {

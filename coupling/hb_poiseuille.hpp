@@ -62,7 +62,7 @@ struct ChannelProfileError {
 // central row yields. It shows what the rheology sees, smearing included; the plug is the velocity's.
 template <int D>
 ChannelProfileError channel_profile_error(const Simulation<D>& sim, const HbPoiseuille& exact, double centre) {
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const double u_max = exact.max_velocity(), dp = sim.options.dp;
   ChannelProfileError e;
   double sum2 = 0.0, nearest = INFINITY, centre_sum = 0.0;

@@ -36,7 +36,7 @@ class Settling::Observer : public StepObserver<2> {
     for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   }
   void after_step(Simulation<2>& sim, double dt) override {
-    auto& P = sim.particles;
+    auto& P = sim.particles();
     for (std::size_t i = 0; i < P.real_count(); ++i)
       if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
         const Vec<2>& x0 = start_[P.id[i]];
@@ -60,7 +60,7 @@ class Settling::Observer : public StepObserver<2> {
 Settling::Settling(Simulation<2>& sim, SettlingPlan plan) : sim_(sim) {
   out_.duration = plan.duration;
   out_.damping_rate = plan.damping_rate;
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   start_.resize(P.real_count());  // real particles (periodic ghosts come and go), by id
   for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
@@ -96,7 +96,7 @@ void Settling::restore_state(StateReader& in) { in.get(out_.largest_speed); }
 
 Relaxation Settling::finish() {
   auto& sim = sim_;
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   // Water at rest stays in the domain: what left it while settling flowed off an open edge.
   if (const auto& left = sim.left_the_domain(); !left.empty())
     throw std::runtime_error(fmt::format(

@@ -71,44 +71,50 @@ void RigidBodies::place_particles(Particles<2>& P, double time) {
 
 // Sums per-particle forces into their bodies in index order (deterministic for any thread count), with torques
 // about each body's centre of mass.
-void RigidBodies::accumulate(const Particles<2>& P, const std::vector<Vec<2>>& f, bool viscous) {
-  std::vector<rigid::Vec2> centre(size());
-  for (std::size_t b = 0; b < size(); ++b) centre[b] = world.state(int(b)).position;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const int b = P.body_of(i);
-    if (b < 0) continue;
-    const Vec<2> arm = P.position[i] - Vec<2>(centre[b][0], centre[b][1]);
-    auto& acc = pending_[b];
-    if (viscous) {
-      acc.viscous += f[i];
-      acc.viscous_torque += cross2(arm, f[i]);
-    } else {
-      acc.pressure += f[i];
-      acc.pressure_torque += cross2(arm, f[i]);
-    }
+void RigidBodies::accumulate(const Domain<2>& domain, const std::vector<Vec<2>>& f, bool viscous) {
+  const Particles<2>& P = domain.particles;
+  std::vector<Vec<2>> centre(size());
+  for (std::size_t b = 0; b < size(); ++b) {
+    const rigid::Vec2 c = world.state(int(b)).position;
+    centre[b] = Vec<2>(c[0], c[1]);
   }
+  domain.sum_by_group(
+      pending_, [&](std::size_t i) { return P.body_of(i); },
+      [&](BodyFluidForce& acc, std::size_t i) {
+        const Vec<2> arm = P.position[i] - centre[static_cast<std::size_t>(P.body_of(i))];
+        if (viscous) {
+          acc.viscous += f[i];
+          acc.viscous_torque += cross2(arm, f[i]);
+        } else {
+          acc.pressure += f[i];
+          acc.pressure_torque += cross2(arm, f[i]);
+        }
+      });
 }
 
 // For every body particle j, the sum over its fluid neighbours i of pair_force(i, j) (the force fluid i exerts on
-// the body through j), then summed per body in index order.
+// the body through j), then summed per body (Domain::sum_by_group).
 template <class PairForce>
-void RigidBodies::exchange(const Particles<2>& P, const NeighborList& nl, bool viscous, const PairForce& pair_force) {
+void RigidBodies::exchange(const Domain<2>& domain, const NeighborList& nl, bool viscous,
+                           const PairForce& pair_force) {
+  const Particles<2>& P = domain.particles;
   scratch_.assign(P.size(), Vec<2>::Zero());
-  parallel_for(P.size(), [&](std::size_t j) {
+  parallel_for(domain.owned_count(), [&](std::size_t j) {
     if (P.body_frame[j] < 0) return;
     Vec<2> f = Vec<2>::Zero();
     for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q)
       if (P.kind[*q] == Kind::fluid) f += pair_force(*q, static_cast<std::uint32_t>(j));
     scratch_[j] = f;
   });
-  accumulate(P, scratch_, viscous);
+  accumulate(domain, scratch_, viscous);
 }
 
 // Viscous force of body particle j on fluid i: m_i scale_i term_ij; the body gets minus it.
-void RigidBodies::add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0,
+void RigidBodies::add_viscous_forces(const Domain<2>& domain, const NeighborList& nl, double re, double n0,
                                      double lambda, const ViscousWall& wall, double volume) {
+  const Particles<2>& P = domain.particles;
   const double re2 = re * re;
-  exchange(P, nl, true, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+  exchange(domain, nl, true, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
     const double r2 = distance_squared<2>(P.position[j], P.position[i]);
     if (r2 >= re2) return Vec<2>::Zero();
     const double mass = P.density[i] * volume;
@@ -117,18 +123,20 @@ void RigidBodies::add_viscous_forces(const Particles<2>& P, const NeighborList& 
 }
 
 // Pressure force of body particle j on fluid i: -V_i grad_pair p_i (V_i = m_i / rho_i); the body gets plus it.
-void RigidBodies::add_pressure_forces(const Particles<2>& P, const NeighborList& nl, GradientModel model, double re,
+void RigidBodies::add_pressure_forces(const Domain<2>& domain, const NeighborList& nl, GradientModel model, double re,
                                       double n0, double kappa, double volume) {
-  exchange(P, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+  const Particles<2>& P = domain.particles;
+  exchange(domain, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
     const double mass = P.density[i] * volume;
     return (mass / P.density[i]) * pressure_gradient_pair<2>(model, i, j, P, nl, re, n0, kappa);
   });
 }
 
 // Collision of fluid i with body particle j changes u_i by du_ij: the body receives the impulse -m_i du_ij.
-void RigidBodies::add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance,
+void RigidBodies::add_collision_forces(const Domain<2>& domain, const NeighborList& nl, double distance,
                                        double restitution, double volume, double dt) {
-  exchange(P, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+  const Particles<2>& P = domain.particles;
+  exchange(domain, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
     const double mass = P.density[i] * volume;
     return -(mass / dt) * collision_pair_change<2>(i, j, P, distance, restitution);
   });

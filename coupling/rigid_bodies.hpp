@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fluid/domain.hpp"
 #include "fluid/gradient.hpp"
 #include "fluid/name_table.hpp"
 #include "fluid/neighbor_grid.hpp"
@@ -71,11 +72,11 @@ class RigidBodies {
   void place_particles(Particles<2>& P, double time);
 
   // The three exchanges, each called where the fluid computes the same pair terms, before the fluid's update.
-  void add_viscous_forces(const Particles<2>& P, const NeighborList& nl, double re, double n0, double lambda,
+  void add_viscous_forces(const Domain<2>& domain, const NeighborList& nl, double re, double n0, double lambda,
                           const ViscousWall& wall, double volume);
-  void add_pressure_forces(const Particles<2>& P, const NeighborList& nl, GradientModel model, double re, double n0,
+  void add_pressure_forces(const Domain<2>& domain, const NeighborList& nl, GradientModel model, double re, double n0,
                            double kappa, double volume);
-  void add_collision_forces(const Particles<2>& P, const NeighborList& nl, double distance, double restitution,
+  void add_collision_forces(const Domain<2>& domain, const NeighborList& nl, double distance, double restitution,
                             double volume, double dt);
   // The water's pressure on the faces that rest on a wall under water, where no fluid particle reaches: beside the pair
   // terms above, called with them (coupling/dry_face_pressure.hpp). `grid` bins P's positions.
@@ -107,9 +108,9 @@ class RigidBodies {
   void restore_state(StateReader& in);
 
  private:
-  void accumulate(const Particles<2>& P, const std::vector<Vec<2>>& per_particle, bool viscous);
+  void accumulate(const Domain<2>& domain, const std::vector<Vec<2>>& per_particle, bool viscous);
   template <class PairForce>
-  void exchange(const Particles<2>& P, const NeighborList& nl, bool viscous, const PairForce& pair_force);
+  void exchange(const Domain<2>& domain, const NeighborList& nl, bool viscous, const PairForce& pair_force);
   BodyFluidForce& pending(int b) { return pending_[b]; }
   std::vector<BodyFluidForce> pending_;
   std::vector<MeanForces> impulse_;  // force x time since the last take_mean_forces

@@ -35,7 +35,7 @@ void Simulation<D>::check_periodic_setup() const {
     throw std::invalid_argument("periodic_x: the period (" + std::to_string(period.length()) +
                                 " m) must be at least twice the kernel radius plus the neighbour skin (" +
                                 std::to_string(2.0 * list_radius()) + " m)");
-  const auto& P = particles;
+  const auto& P = domain_.particles;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     const double x = P.position[i][0];
     if (P.kind[i] != Kind::fluid && !(x >= period.x_min && x < period.x_max))
@@ -61,6 +61,7 @@ void Simulation<D>::initialise() {
                 std::holds_alternative<Newtonian>(phases[0].rheology) && options.gravity.norm() > 0.0;
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   Vec<D> grid_lo = options.domain_lo, grid_hi = options.domain_hi;
+  domain_.set_period(options.periodic_x);
   if (options.periodic_x) {
     check_periodic_setup();
     // The grid also covers the ghost layers beyond the period's ends.
@@ -68,10 +69,10 @@ void Simulation<D>::initialise() {
     grid_hi[0] = std::max(grid_hi[0], options.periodic_x->x_max + list_radius());
   }
   grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
-  scratch_.assign(particles.size(), Vec<D>::Zero());
+  scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();  // sized by the semi-implicit stage, the only one that uses it
   if constexpr (D == 2) {
-    if (bodies_) bodies_->place_particles(particles, time_);
+    if (bodies_) bodies_->place_particles(domain_.particles, time_);
   }
   update_neighbors(true);
   compute_pressure();
@@ -80,7 +81,7 @@ void Simulation<D>::initialise() {
 
 template <int D>
 void Simulation<D>::restart_at_rest() {
-  auto& P = particles;
+  auto& P = domain_.particles;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] != Kind::fluid) continue;
     P.velocity[i] = Vec<D>::Zero();
@@ -99,50 +100,41 @@ void Simulation<D>::restart_at_rest() {
 
 template <int D>
 void Simulation<D>::update_neighbors(bool force) {
-  auto& x = particles.position;
+  auto& x = domain_.particles.position;
   const double half_skin = 0.5 * options.skin_over_dp * options.dp;
   if (!force) {
     // Ghosts move with their sources: the real particles decide.
-    const double moved2 = parallel_max(particles.real_count(), 0.0, [&](std::size_t i) {
+    const double moved2 = domain_.max_over_owned(0.0, [&](std::size_t i) {
       return distance_squared<D>(x[i], position_at_build_[i]);
     });
     if (moved2 < half_skin * half_skin) return;
   }
-  // Periodic: drop the ghosts and bring the real particles back into the period before sorting them.
-  if (options.periodic_x) {
-    remove_ghosts(particles);
-    wrap_positions(particles, *options.periodic_x);
-  }
+  // Drop the ghosts and bring the real particles back into the period before sorting them.
+  domain_.drop_ghosts();
+  domain_.wrap_into_period();
   // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again.
   grid_.bin(x);
-  particles.reorder(grid_.sorted_indices(), scratch_);  // scratch_ is free between steps
-  // Periodic: fresh ghosts behind the sorted real particles; they are binned and found as neighbours, but need no
-  // list of their own (every stage computes real particles only and copies them into the ghosts).
-  if (options.periodic_x) {
-    add_ghosts(particles, *options.periodic_x, list_radius());
-    scratch_.resize(particles.size(), Vec<D>::Zero());
+  domain_.particles.reorder(grid_.sorted_indices(), scratch_);  // scratch_ is free between steps
+  // Fresh ghosts behind the sorted real domain_.particles; they are binned and found as neighbours, but need no list of
+  // their own (every stage computes real particles only and refreshes the ghosts).
+  if (domain_.make_ghosts(list_radius())) {
+    scratch_.resize(domain_.particles.size(), Vec<D>::Zero());
     grid_.bin(x);
   } else {
-    grid_.follow_reorder();  // the binning of the sorted particles, known without binning them again
+    grid_.follow_reorder();  // the binning of the sorted domain_.particles, known without binning them again
   }
-  build_neighbor_list(grid_, x, list_radius(), list_, particles.real_count());
+  build_neighbor_list(grid_, x, list_radius(), list_, domain_.particles.real_count());
   pair_weights_.forget();  // of the list before
   position_at_build_ = x;
   ++rebuilds_;
   correction_current_ = false;  // of the order before
 }
 
-// Copies every real particle's motion into its ghosts (nothing to do when not periodic).
-template <int D>
-void Simulation<D>::sync_ghosts_now() {
-  if (particles.ghost_count() != 0) sync_ghost_motion(particles);
-}
-
-// Periodic: each sub-stage computes the real particles, and its result is copied into the ghosts before the next
+// Periodic: each sub-stage computes the real domain_.particles, and its result is copied into the ghosts before the next
 // reads it (a ghost's own neighbourhood is cut off at the outer edge of the ghost layer, so a ghost never computes).
 template <int D>
 void Simulation<D>::compute_pressure() {
-  auto& P = particles;
+  auto& P = domain_.particles;
   const std::size_t n = P.real_count();
   const double r_e = re();
   using WP = WallPressure;
@@ -153,7 +145,7 @@ void Simulation<D>::compute_pressure() {
       P.wall_fill[i] = mirror_fill<D>(i, P, grid_, list_, options.dp, keep);
       return true;
     });
-    copy_to_ghosts(P, P.wall_fill);
+    domain_.refresh({HaloField::wall_fill});
   }
   // Fluid particles keep their pairs' factors for the pressure gradient at these same positions
   // (correct_with_pressure_gradient), where the model reads them.
@@ -183,10 +175,9 @@ void Simulation<D>::compute_pressure() {
     P.pressure[i] = p;
   });
   pair_weights_.mark_taken_at(step_count_, factor);
-  copy_to_ghosts(P, P.number_density);
-  copy_to_ghosts(P, P.pressure);
+  domain_.refresh({HaloField::number_density, HaloField::pressure});
   if (corrected) {
-    copy_to_ghosts(P, P.gradient_correction);
+    domain_.refresh({HaloField::gradient_correction});
     correction_current_ = true;
   }
   if (options.surface_pressure == SurfacePressure::extrapolated) {
@@ -196,7 +187,7 @@ void Simulation<D>::compute_pressure() {
       if (P.kind[i] == Kind::fluid && P.number_density[i] < surface_n)
         P.pressure[i] = extrapolated_surface_pressure<D>(i, P, list_, r_e, options.gravity, is_bulk);
     });
-    copy_to_ghosts(P, P.pressure);
+    domain_.refresh({HaloField::pressure});
   }
   // boundary pressure below reads the fluid's, ghosts' included
   // The head between a boundary particle and the fluid follows g - a_w: a wall that accelerates into the water
@@ -217,7 +208,7 @@ void Simulation<D>::compute_pressure() {
       set_boundary_pressure(i, mirror_wall_pressure<D>(i, P, begin, end, head_acceleration(i)));
     });
   }
-  copy_to_ghosts(P, P.pressure);
+  domain_.refresh({HaloField::pressure});
 }
 
 // The corrected gradient's matrices at the particles' present positions (fluid/corrective_matrix.hpp); identity
@@ -225,35 +216,34 @@ void Simulation<D>::compute_pressure() {
 template <int D>
 void Simulation<D>::update_gradient_correction() {
   if (options.gradient != GradientModel::corrected) return;
-  auto& P = particles;
+  auto& P = domain_.particles;
   const double surface_n = options.free_surface_beta * lattice.n0, r_e = re();
   P.gradient_correction.resize(P.size());
   parallel_for(P.real_count(), [&](std::size_t i) {
     P.gradient_correction[i] = corrective_matrix<D>(i, P, list_, r_e, lattice.n0, lattice.kappa, surface_n);
   });
-  copy_to_ghosts(P, P.gradient_correction);
+  domain_.refresh({HaloField::gradient_correction});
   correction_current_ = true;
 }
 
 template <int D>
 double Simulation<D>::max_fluid_speed() const {
-  const auto& P = particles;
-  return std::sqrt(parallel_max(P.real_count(), 0.0, [&](std::size_t i) {
+  const auto& P = domain_.particles;
+  return std::sqrt(domain_.max_over_owned(0.0, [&](std::size_t i) {
     return P.kind[i] == Kind::fluid ? P.velocity[i].squaredNorm() : 0.0;
   }));
 }
 
 template <int D>
 std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
-  const auto& P = particles;
-  const std::size_t n = P.real_count();  // ghosts equal their sources: the real particles decide
+  const auto& P = domain_.particles;
   const double dp = options.dp;
   // Moving boundaries count in the CFL limit: a slide faster than the water around it must not cross more than a
   // fraction of a spacing per step either (fixed walls have zero velocity).
   // So do they in the force limit: body particles carry their body's rigid acceleration (a slide hitting the slope
   // or the water decelerates hard), fixed walls zero. The three largest in one pass.
   const auto [u2_max, a2_max, nu_max] =
-      parallel_max_each<3>(n, {0.0, 0.0, 0.0}, [&](std::size_t i) -> std::array<double, 3> {
+      domain_.template max_each_over_owned<3>({0.0, 0.0, 0.0}, [&](std::size_t i) -> std::array<double, 3> {
         return {P.velocity[i].squaredNorm(), P.acceleration[i].squaredNorm(),
                 P.kind[i] == Kind::fluid ? P.viscosity[i] / P.density[i] : 0.0};
       });
@@ -273,8 +263,8 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   update_neighbors(false);
   const bool walls_checked = D == 2 && !wall_crossing.empty();
   if (walls_checked) {
-    position_at_step_start_.resize(particles.real_count());
-    parallel_for(particles.real_count(), [&](std::size_t i) { position_at_step_start_[i] = particles.position[i]; });
+    position_at_step_start_.resize(domain_.particles.real_count());
+    parallel_for(domain_.particles.real_count(), [&](std::size_t i) { position_at_step_start_[i] = domain_.particles.position[i]; });
   }
   update_water_surface();
   update_viscosity(dt);
@@ -287,9 +277,9 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   ++step_count_;
   ++limit_counts_[static_cast<int>(limit)];
   // What the end of a step looks for, in one pass (each was a pass of its own, 1.5-2 % of the step each).
-  const auto& P = particles;
-  const auto [crossed, worst, densest, left] = parallel_max_each<4>(
-      P.real_count(), {0.0, 0.0, 0.0, 0.0}, [&](std::size_t i) -> std::array<double, 4> {
+  const auto& P = domain_.particles;
+  const auto [crossed, worst, densest, left] = domain_.template max_each_over_owned<4>(
+      {0.0, 0.0, 0.0, 0.0}, [&](std::size_t i) -> std::array<double, 4> {
         return {walls_checked && face_crossed(i) >= 0 ? 1.0 : 0.0, static_cast<double>(problem_code(i)),
                 P.kind[i] == Kind::fluid ? P.number_density[i] : 0.0, outside_domain(i) ? 1.0 : 0.0};
       });
@@ -307,7 +297,7 @@ int Simulation<D>::face_crossed(std::size_t i) const {
   if constexpr (D != 2) {
     return -1;
   } else {
-    const auto& P = particles;
+    const auto& P = domain_.particles;
     if (P.kind[i] != Kind::fluid || i >= position_at_step_start_.size()) return -1;
     return wall_crossing.crossed(position_at_step_start_[i], P.position[i]);
   }
@@ -319,7 +309,7 @@ std::optional<Instability> Simulation<D>::wall_crossing_report() const {
   if constexpr (D != 2) {
     return std::nullopt;
   } else {
-    const auto& P = particles;
+    const auto& P = domain_.particles;
     const std::size_t n = P.real_count();
     std::size_t pick = n;
     for (std::size_t i = 0; i < n; ++i)
@@ -344,7 +334,7 @@ std::optional<Instability> Simulation<D>::wall_crossing_report() const {
 // compares false both ways: it is not "outside", and the check reports it.
 template <int D>
 bool Simulation<D>::outside_domain(std::size_t i) const {
-  const auto& P = particles;
+  const auto& P = domain_.particles;
   if (P.kind[i] != Kind::fluid) return false;
   const Vec<D>& x = P.position[i];
   bool out = false;
@@ -357,7 +347,7 @@ bool Simulation<D>::outside_domain(std::size_t i) const {
 // this): they are recorded and taken out, and the neighbour list is built afresh without them.
 template <int D>
 void Simulation<D>::remove_particles_that_left() {
-  auto& P = particles;
+  auto& P = domain_.particles;
   const std::size_t n = P.real_count();
   std::vector<std::size_t> leaving;
   for (std::size_t i = 0; i < n; ++i)
@@ -368,7 +358,7 @@ void Simulation<D>::remove_particles_that_left() {
     left_the_domain_.push_back({P.id[i], time_, std::vector<double>(P.position[i].data(), P.position[i].data() + D)});
   std::vector<bool> drop(n, false);
   for (const std::size_t i : leaving) drop[i] = true;
-  if (options.periodic_x) remove_ghosts(P);
+  domain_.drop_ghosts();
   P.remove_keeping_ids([&](std::size_t i) { return i < n && drop[i]; });
   update_neighbors(true);
 }
@@ -391,7 +381,7 @@ template <int D>
 void Simulation<D>::update_viscosity(double dt) {
   if (!rheology_ && !basal_friction_) return;
   const PorePressureField<D> pore = pore_pressure_field();
-  auto& P = particles;
+  auto& P = domain_.particles;
   const std::size_t n = P.real_count();
   const double r_e = re();
   if (rheology_) {
@@ -409,7 +399,7 @@ void Simulation<D>::update_viscosity(double dt) {
                                   : P.pressure[i];
       P.viscosity[i] = effective_viscosity(model, rate, pressure);
     });
-    copy_to_ghosts(P, P.viscosity);
+    domain_.refresh({HaloField::viscosity});
   }
   if (basal_friction_ && options.wall_slip == WallSlip::no_slip) {
     const ViscousWall wall = options.viscous_wall();
@@ -420,7 +410,7 @@ void Simulation<D>::update_viscosity(double dt) {
       const WallShear s = wall_shear<D>(i, P, list_, r_e, wall.min_distance, options.gravity, pore, dt);
       P.wall_fraction[i] = coulomb_wall_fraction(P.viscosity[i], mu_b, s.normal_stress, s.rate);
     });
-    copy_to_ghosts(P, P.wall_fraction);
+    domain_.refresh({HaloField::wall_fraction});
   }
 }
 
@@ -430,7 +420,7 @@ void Simulation<D>::update_viscosity(double dt) {
 template <int D>
 void Simulation<D>::update_water_surface() {
   if (!pore_water_) return;
-  const auto& P = particles;
+  const auto& P = domain_.particles;
   water_surface_.build(P, options.gravity, options.dp, [&](std::size_t i) { return P.phase[i] == 0; });
 }
 
@@ -442,12 +432,12 @@ PorePressureField<D> Simulation<D>::pore_pressure_field() const {
 
 // Viscosity and gravity give the predicted velocity and position (fluid only). Explicitly, the viscous term is
 // evaluated at the velocities of the start of the step; semi-implicitly (fluid/implicit_viscosity.hpp) at the
-// solution u~ of the implicit system. Either way the same pair terms then update the fluid and, for body particles,
+// solution u~ of the implicit system. Either way the same pair terms then update the fluid and, for body domain_.particles,
 // go to their bodies (before the positions move), so momentum is exchanged exactly whatever the solver's tolerance:
 // u* = u + dt (a + a_visc(u~)) differs from u~ only by the solver's residual and the pressure gradient's share.
 template <int D>
 void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
-  auto& P = particles;
+  auto& P = domain_.particles;
   const std::size_t n = P.real_count();  // ghosts are copied from their sources at the end
   const double r_e = re();
   const bool implicit = options.viscous_scheme == ViscousScheme::implicit;
@@ -482,7 +472,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     start_velocity_.assign(P.velocity.begin(), P.velocity.end());
     implicit_viscosity_.tolerance = options.implicit_tolerance;
     // u~ (ghosts included) and, in scratch_, the viscous acceleration at u~ of every fluid particle.
-    last_viscous_solve_ = implicit_viscosity_.solve<D>(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(),
+    last_viscous_solve_ = implicit_viscosity_.solve<D>(domain_, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(),
                                                        dt, predictor_acceleration_, scratch_);
     record(last_viscous_solve_);
   } else {
@@ -497,7 +487,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
   }
   if constexpr (D == 2) {
     if (bodies_)
-      bodies_->add_viscous_forces(P, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(), particle_volume());
+      bodies_->add_viscous_forces(domain_, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(), particle_volume());
   }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
@@ -508,7 +498,7 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
     P.velocity[i] += dt * P.acceleration[i];
     P.position[i] += dt * P.velocity[i];
   });
-  sync_ghosts_now();
+  domain_.refresh({HaloField::motion});
 }
 
 template <int D>
@@ -524,7 +514,7 @@ void Simulation<D>::record(const ViscousSolveReport& r) {
 // Pressure-gradient correction of velocity and position (and the settling's damping, when on).
 template <int D>
 void Simulation<D>::correct_with_pressure_gradient(double dt) {
-  auto& P = particles;
+  auto& P = domain_.particles;
   const double r_e = re();
   const GradientModel model = options.gradient;
   const double damping = options.velocity_damping_rate > 0.0 ? std::exp(-dt * options.velocity_damping_rate) : 1.0;
@@ -538,7 +528,7 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
   });
   if constexpr (D == 2) {
     if (bodies_) {
-      bodies_->add_pressure_forces(P, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
+      bodies_->add_pressure_forces(domain_, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
       bodies_->add_dry_face_pressure(P, grid_, pore_pressure_field(), options.dp);
     }
   }
@@ -549,14 +539,14 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
     if (damping != 1.0) P.velocity[i] *= damping;
     P.acceleration[i] += scratch_[i];
   });
-  sync_ghosts_now();
+  domain_.refresh({HaloField::motion});
 }
 
 // Collisions between particles that came too close (fluid/collision.hpp).
 template <int D>
 void Simulation<D>::collide(double dt) {
   if (options.collision_distance_over_dp <= 0.0) return;
-  auto& P = particles;
+  auto& P = domain_.particles;
   const double distance = options.collision_distance_over_dp * options.dp;
   const std::size_t n = P.real_count();
   parallel_for(n, [&](std::size_t i) {
@@ -566,14 +556,14 @@ void Simulation<D>::collide(double dt) {
   });
   if constexpr (D == 2) {
     if (bodies_)
-      bodies_->add_collision_forces(P, list_, distance, options.collision_restitution, particle_volume(), dt);
+      bodies_->add_collision_forces(domain_, list_, distance, options.collision_restitution, particle_volume(), dt);
   }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += scratch_[i];
     P.position[i] += dt * scratch_[i];
   });
-  sync_ghosts_now();
+  domain_.refresh({HaloField::motion});
 }
 
 // Rigid bodies: the fluid's force in, one rigid step of the same dt, boundary particles to the new poses.
@@ -582,7 +572,7 @@ void Simulation<D>::move_bodies(double dt) {
   if constexpr (D == 2) {
     if (!bodies_) return;
     bodies_->advance(time_ + dt, dt);
-    bodies_->place_particles(particles, time_ + dt);
+    bodies_->place_particles(domain_.particles, time_ + dt);
   }
 }
 
@@ -591,7 +581,7 @@ void Simulation<D>::move_bodies(double dt) {
 // wall_crossing_report tells it.
 template <int D>
 int Simulation<D>::problem_code(std::size_t i) const {
-  const auto& P = particles;
+  const auto& P = domain_.particles;
   const auto& x = P.position[i];
   if (!x.allFinite() || !P.velocity[i].allFinite() || !std::isfinite(P.pressure[i]) ||
       !std::isfinite(P.number_density[i]))
@@ -606,8 +596,8 @@ int Simulation<D>::problem_code(std::size_t i) const {
 // Real particles only (a ghost equals its source).
 template <int D>
 std::optional<Instability> Simulation<D>::check() const {
-  const int worst = static_cast<int>(
-      parallel_max(particles.real_count(), 0.0, [&](std::size_t i) { return double(problem_code(i)); }));
+  const int worst =
+      static_cast<int>(domain_.max_over_owned(0.0, [&](std::size_t i) { return double(problem_code(i)); }));
   if (worst == 0) return std::nullopt;
   return problem_report(worst);
 }
@@ -615,7 +605,7 @@ std::optional<Instability> Simulation<D>::check() const {
 // The particle of lowest id with problem code `worst` (independent of the thread count), as an instability.
 template <int D>
 Instability Simulation<D>::problem_report(int worst) const {
-  const auto& P = particles;
+  const auto& P = domain_.particles;
   const std::size_t n = P.real_count();
   std::size_t pick = n;
   for (std::size_t i = 0; i < n; ++i)
@@ -640,7 +630,7 @@ Instability Simulation<D>::problem_report(int worst) const {
 // Periodic: ghosts count (they are the fluid beyond the period's ends), so a point near an end sees all its water.
 template <int D>
 double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
-  const auto& P = particles;
+  const auto& P = domain_.particles;
   const double r_e = re();
   double n = 0.0;
   grid_.for_each_near(point, grid_.cell_size(), P.position, [&](std::uint32_t j, double r2) {
@@ -651,13 +641,13 @@ double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
 
 template <int D>
 void Simulation<D>::save_state(StateWriter& out) const {
-  const_cast<Particles<D>&>(particles).for_each_array([&](auto& v) { out.put(v); });
-  out.put(particles.body_frames.body);
-  out.put(particles.body_frames.offset);
-  out.put(particles.body_frames.normal);
-  out.put(particles.ghost_source);
-  out.put(particles.ghost_shift);
-  out.put<std::uint64_t>(particles.removed_count);
+  const_cast<Particles<D>&>(domain_.particles).for_each_array([&](auto& v) { out.put(v); });
+  out.put(domain_.particles.body_frames.body);
+  out.put(domain_.particles.body_frames.offset);
+  out.put(domain_.particles.body_frames.normal);
+  out.put(domain_.particles.ghost_source);
+  out.put(domain_.particles.ghost_shift);
+  out.put<std::uint64_t>(domain_.particles.removed_count);
   out.put(time_);
   out.put(step_count_);
   out.put(limit_counts_);
@@ -671,8 +661,8 @@ void Simulation<D>::save_state(StateWriter& out) const {
   // step (predict_with_viscosity_and_gravity), so a resumed run needs them to stay bit-identical to the straight one.
   out.put(correction_current_);
   std::vector<double> correction;
-  correction.reserve(particles.gradient_correction.size() * D * D);
-  for (const Mat<D>& L : particles.gradient_correction) correction.insert(correction.end(), L.data(), L.data() + D * D);
+  correction.reserve(domain_.particles.gradient_correction.size() * D * D);
+  for (const Mat<D>& L : domain_.particles.gradient_correction) correction.insert(correction.end(), L.data(), L.data() + D * D);
   out.put(correction);
   out.put<std::uint64_t>(left_the_domain_.size());
   for (const auto& l : left_the_domain_) {
@@ -690,16 +680,16 @@ void Simulation<D>::save_state(StateWriter& out) const {
 
 template <int D>
 void Simulation<D>::restore_state(StateReader& in) {
-  const std::size_t made = particles.real_count() + particles.removed_count;
-  particles.for_each_array([&](auto& v) { in.get(v); });
-  in.get(particles.body_frames.body);
-  in.get(particles.body_frames.offset);
-  in.get(particles.body_frames.normal);
+  const std::size_t made = domain_.particles.real_count() + domain_.particles.removed_count;
+  domain_.particles.for_each_array([&](auto& v) { in.get(v); });
+  in.get(domain_.particles.body_frames.body);
+  in.get(domain_.particles.body_frames.offset);
+  in.get(domain_.particles.body_frames.normal);
   pair_weights_.forget();
-  in.get(particles.ghost_source);
-  in.get(particles.ghost_shift);
-  particles.removed_count = in.get<std::uint64_t>();
-  if (particles.real_count() + particles.removed_count != made)
+  in.get(domain_.particles.ghost_source);
+  in.get(domain_.particles.ghost_shift);
+  domain_.particles.removed_count = in.get<std::uint64_t>();
+  if (domain_.particles.real_count() + domain_.particles.removed_count != made)
     throw std::runtime_error("the checkpoint's particles are not the scene's");
   in.get(time_);
   in.get(step_count_);
@@ -713,11 +703,11 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(correction_current_);
   std::vector<double> correction;
   in.get(correction);
-  if (correction.size() % (D * D) != 0 || (correction_current_ && correction.size() != particles.size() * D * D))
+  if (correction.size() % (D * D) != 0 || (correction_current_ && correction.size() != domain_.particles.size() * D * D))
     throw std::runtime_error("the checkpoint's gradient matrices are not its particles'");
-  particles.gradient_correction.resize(correction.size() / (D * D));
-  for (std::size_t k = 0; k < particles.gradient_correction.size(); ++k)
-    std::copy_n(correction.data() + k * D * D, D * D, particles.gradient_correction[k].data());
+  domain_.particles.gradient_correction.resize(correction.size() / (D * D));
+  for (std::size_t k = 0; k < domain_.particles.gradient_correction.size(); ++k)
+    std::copy_n(correction.data() + k * D * D, D * D, domain_.particles.gradient_correction[k].data());
   left_the_domain_.resize(in.get<std::uint64_t>());
   for (auto& l : left_the_domain_) {
     in.get(l.id);
@@ -731,10 +721,10 @@ void Simulation<D>::restore_state(StateReader& in) {
     if (bodies_) bodies_->restore_state(in);
   }
   // The neighbour list as it was built: from the positions of that moment, in the present order (no re-sort).
-  scratch_.assign(particles.size(), Vec<D>::Zero());
+  scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();
   grid_.bin(position_at_build_);
-  build_neighbor_list(grid_, position_at_build_, list_radius(), list_, particles.real_count());
+  build_neighbor_list(grid_, position_at_build_, list_radius(), list_, domain_.particles.real_count());
 }
 
 template class Simulation<2>;

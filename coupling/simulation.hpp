@@ -3,10 +3,11 @@
 // pressure at the predicted positions, pressure-gradient correction, collisions, rigid bodies (fluid force in,
 // Bullet step, boundary particles placed from the new poses), stability checks.
 //
-// Periodic in x (options.periodic_x, fluid/periodic.hpp): the particle arrays hold the real particles, then their
-// ghost images. Every stage computes the real particles only (particles.real_count()) and then copies the sources
-// into the ghosts; the checks, the time-step limits and the largest speed look at real particles only. Outputs must
-// take the first particles.real_count() entries (tools/run_outputs.hpp, IdOrdered).
+// The particles live in the domain (fluid/domain.hpp): the real (owned) particles, then their ghost copies (today
+// the periodic images in x, options.periodic_x). Every stage computes the real particles only and then refreshes the
+// fields its neighbours read next; the checks, the time-step limits and the largest speed are the domain's
+// reductions over real particles. Outputs must take the first particles().real_count() entries
+// (tools/run_outputs.hpp, IdOrdered).
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "fluid/domain.hpp"
 #include "fluid/equation_of_state.hpp"
 #include "fluid/fluid_options.hpp"
 #include "fluid/pore_pressure.hpp"
@@ -63,7 +65,14 @@ struct Instability {
 template <int D>
 class Simulation {
  public:
-  Particles<D> particles;
+  Simulation() = default;
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // The real particles, then their ghosts (fluid/domain.hpp).
+  Particles<D>& particles() { return domain_.particles; }
+  const Particles<D>& particles() const { return domain_.particles; }
+  const Domain<D>& domain() const { return domain_; }
   FluidOptions<D> options;
   // The phases particles refer to (Particles::phase). With any non-Newtonian phase, every fluid particle's viscosity
   // is set from its phase's rheology at the start of each step; empty: viscosities stay as the particles were made.
@@ -160,8 +169,8 @@ class Simulation {
   double particle_volume() const { return std::pow(options.dp, D); }  // per unit width in 2-D
   double list_radius() const { return re() + options.skin_over_dp * options.dp; }
   void check_periodic_setup() const;
-  void sync_ghosts_now();
 
+  Domain<D> domain_;
   std::shared_ptr<RigidBodies> bodies_;
   double time_ = 0.0;
   long step_count_ = 0;

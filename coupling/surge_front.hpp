@@ -46,7 +46,7 @@ double water_height_at_wall(const Simulation<D>& sim, double wall_face_x, double
 // body).
 template <int D>
 SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, double floor_y, double band) {
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const auto& nl = sim.neighbors();
   const double dp = sim.options.dp, link2 = 4.0 * dp * dp;
   const std::size_t n = P.real_count();

@@ -22,7 +22,7 @@ struct VelocityProfileRow {
 // count).
 template <int D>
 std::vector<VelocityProfileRow> velocity_profile(const Simulation<D>& sim, double y_origin, double bin) {
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   std::map<long, VelocityProfileRow> bins;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     if (P.kind[i] != Kind::fluid) continue;

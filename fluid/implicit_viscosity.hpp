@@ -40,11 +40,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "fluid/domain.hpp"
 #include "fluid/kernel.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
-#include "fluid/periodic.hpp"
 #include "fluid/strain_rate.hpp"
 #include "fluid/viscosity.hpp"
 
@@ -123,7 +123,7 @@ class ImplicitViscosity {
   // the walk that classifies the rows, and again after the solve only where a stiff particle is a neighbour.
   // Positions are not moved; particles other than fluid keep their velocities.
   template <int D>
-  ViscousSolveReport solve(Particles<D>& P, const NeighborList& nl, double re, double n0, double lambda,
+  ViscousSolveReport solve(Domain<D>& domain, const NeighborList& nl, double re, double n0, double lambda,
                            const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration,
                            std::vector<Vec<D>>& viscous_acceleration);
 
@@ -140,17 +140,18 @@ class ImplicitViscosity {
 };
 
 template <int D>
-ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList& nl, double re, double n0,
+ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborList& nl, double re, double n0,
                                             double lambda, const ViscousWall& wall, double dt,
                                             const std::vector<Vec<D>>& explicit_acceleration,
                                             std::vector<Vec<D>>& viscous_acceleration) {
-  const std::size_t n = P.real_count();
+  Particles<D>& P = domain.particles;
+  const std::size_t n = domain.owned_count();
   if (viscous_acceleration.size() < P.size()) viscous_acceleration.resize(P.size(), Vec<D>::Zero());
   // Every fluid particle starts at u + dt a, the u~ of those that are not unknowns.
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] == Kind::fluid) P.velocity[i] += dt * explicit_acceleration[i];
   });
-  copy_to_ghosts(P, P.velocity);
+  domain.refresh({HaloField::velocity});
   // Unknowns: the stiff real fluid particles (header). A periodic ghost (fluid/periodic.hpp) is its source's unknown.
   // The same walk gives the viscous acceleration at u + dt a, which is that at u~ wherever no unknown is near.
   const double stiff = stiff_row_number();
@@ -247,7 +248,7 @@ ViscousSolveReport ImplicitViscosity::solve(Particles<D>& P, const NeighborList&
     report.converged = report.converged && cg.info() == Eigen::Success;
   }
   parallel_for(rows, [&](std::size_t r) { P.velocity[particle_of_[r]] = u.row(r).transpose(); });
-  copy_to_ghosts(P, P.velocity);
+  domain.refresh({HaloField::velocity});
 
   // The viscous acceleration again where u~ changed: the unknowns and every fluid particle in their lists (a
   // superset of the neighbours within re; serial, for it writes to neighbours).

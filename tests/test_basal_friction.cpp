@@ -258,18 +258,18 @@ output: {{snapshots: false}}
   BlockRun r;
   r.slope_angle_deg = scene->slides[0].slope_angle_deg;
   r.criterion = scene->slides[0].criterion;
-  const Vec<2> c0 = centre_of_mass(sim.particles, phase);
-  const auto start = slide_positions(sim.particles, phase);
+  const Vec<2> c0 = centre_of_mass(sim.particles(), phase);
+  const auto start = slide_positions(sim.particles(), phase);
   EXPECT_TRUE(run_scene(*scene, [&](const Simulation<2>& s) {
-    const Vec<2> c = centre_of_mass(s.particles, phase);
+    const Vec<2> c = centre_of_mass(s.particles(), phase);
     r.t.push_back(s.time());
     r.along.push_back(c[0] - c0[0]);
-    for (std::size_t i = 0; i < s.particles.size(); ++i) {
-      if (s.particles.kind[i] != Kind::fluid || s.particles.phase[i] != phase) continue;
-      const Vec<2>& x0 = start.at(s.particles.id[i]);
-      r.largest_particle = std::max(r.largest_particle, (s.particles.position[i] - x0).norm());
+    for (std::size_t i = 0; i < s.particles().size(); ++i) {
+      if (s.particles().kind[i] != Kind::fluid || s.particles().phase[i] != phase) continue;
+      const Vec<2>& x0 = start.at(s.particles().id[i]);
+      r.largest_particle = std::max(r.largest_particle, (s.particles().position[i] - x0).norm());
       r.largest_shape_change =
-          std::max(r.largest_shape_change, ((s.particles.position[i] - c) - (x0 - c0)).norm());
+          std::max(r.largest_shape_change, ((s.particles().position[i] - c) - (x0 - c0)).norm());
     }
   }));
   r.steps = sim.step_count();

@@ -41,7 +41,7 @@ TEST(Gate, HoldsTheWaterWhileItSettlesAndIsGoneAtTheStart) {
   write_file(dir / "s.yaml", gated_column("settled"));
   auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "gate");
   auto& sim = *scene->simulation;
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   // The same scene without the gate: the tank's boundary particles are the ones left.
   write_file(dir / "no_gate.yaml", gated_column("lattice", false));  // not settled: nothing would hold it
   const auto ungated = cases::build_scene(cases::load_scene(dir / "no_gate.yaml", {}), "no_gate");

@@ -17,7 +17,7 @@ void expect_gauge_reads_the_edge(const std::string& lattice) {
   const auto& sim = *scene->simulation;
   const double dp = sim.options.dp;
   double top = -1.0;
-  for (std::size_t i = 0; i < sim.particles.size(); ++i) top = std::max(top, sim.particles.position[i][1]);
+  for (std::size_t i = 0; i < sim.particles().size(); ++i) top = std::max(top, sim.particles().position[i][1]);
   const double edge = top + 0.5 * row_spacing(sim.options.lattice, dp);
   // Eleven gauges across one lattice spacing in the middle of the block.
   const double a = nearest_spacing(sim.options.lattice, dp);

@@ -57,7 +57,7 @@ void build_channel(Simulation<2>& sim, const HbPoiseuille& exact, int across, Vi
   o.domain_lo = Vec<2>(0.0, -4 * re);
   o.domain_hi = Vec<2>(L, 2 * H + 4 * re);
   sim.phases = {Phase{"mud", rho, HerschelBulkley{exact.yield_stress, K, exact.flow_index, reg, 1e4}}};
-  auto& P = sim.particles;
+  auto& P = sim.particles();
   const int layers = boundary_layers(o.re_over_dp);
   for (const auto& face : {std::vector<Vec<2>>{Vec<2>(0.5 * dp, 0.0), Vec<2>(L - 0.5 * dp, 0.0)},
                            std::vector<Vec<2>>{Vec<2>(L - 0.5 * dp, 2 * H), Vec<2>(0.5 * dp, 2 * H)}})
@@ -82,7 +82,7 @@ TEST(HbPoiseuille, PlugMeasureReadsTheClosedForm) {
         exact.yield_stress = yield_stress;
         Simulation<2> sim;
         build_channel(sim, exact, across, ViscousScheme::implicit, Papanastasiou{1000.0});
-        auto& P = sim.particles;
+        auto& P = sim.particles();
         for (std::size_t i = 0; i < P.size(); ++i)
           if (P.kind[i] == Kind::fluid) P.velocity[i] = Vec<2>(exact.velocity(P.position[i][1] - H), 0.0);
         const ChannelProfileError e = channel_profile_error(sim, exact, H);

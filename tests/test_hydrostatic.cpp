@@ -22,7 +22,7 @@ StillTankResult run_still_tank() {
   auto scene = load_shipped_scene("hydrostatic_2d.yaml");
   const auto& opt = scene->simulation->options;
   const double dp = opt.dp, g = -opt.gravity[1], rho = 1000.0;
-  const auto& P0 = scene->simulation->particles;
+  const auto& P0 = scene->simulation->particles();
   std::vector<Vec<2>> start(P0.size());
   for (std::size_t i = 0; i < P0.size(); ++i) start[P0.id[i]] = P0.position[i];
   StillTankResult r;
@@ -33,7 +33,7 @@ StillTankResult run_still_tank() {
   const double sqrt_gh = std::sqrt(g * mass_level);
   double pressure_sum = 0.0, exact_sum = 0.0;
   run_scene(*scene, [&](const Simulation<2>& sim) {
-    const auto& P = sim.particles;
+    const auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i) {
       if (P.kind[i] != Kind::fluid) continue;
       r.max_displacement_over_dp = std::max(r.max_displacement_over_dp, (P.position[i] - start[P.id[i]]).norm() / dp);
@@ -52,8 +52,8 @@ StillTankResult run_still_tank() {
   const auto& sim = *scene->simulation;
   r.largest_ratio_recorded = sim.largest_number_density_ratio();
   double lowest = mass_level;
-  for (std::size_t i = 0; i < sim.particles.size(); ++i)
-    if (sim.particles.kind[i] == Kind::fluid) lowest = std::min(lowest, sim.particles.position[i][1]);
+  for (std::size_t i = 0; i < sim.particles().size(); ++i)
+    if (sim.particles().kind[i] == Kind::fluid) lowest = std::min(lowest, sim.particles().position[i][1]);
   r.hydrostatic_ratio = sim.eos.number_density_ratio(rho * g * (mass_level - lowest), rho);
   std::printf("largest n/n0 %.6f (hydrostatic at the deepest particle %.6f)\n", r.largest_ratio_recorded,
               r.hydrostatic_ratio);

@@ -42,7 +42,7 @@ method:
 TEST(HydrostaticStart, WaterOnAStepStartsWithTheNumberDensityOfItsDepth) {
   const auto scene = step_scene();
   const auto& sim = *scene->simulation;
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const double dp = 0.01, n0 = sim.lattice.n0;
   // The first row on the step's top, and the same row over the deep water beside the step (same depth below the
   // surface, so the same compression).

@@ -22,7 +22,8 @@ namespace {
 // 20 Pa s) in the right half; velocities random.
 struct Patch {
   double dp = 0.01, re = 0.021;
-  Particles<2> P;
+  Domain<2> domain;
+  Particles<2>& P = domain.particles;
   NeighborList list;
   LatticeConstants c = lattice_constants<2>(dp, re);
   std::vector<Vec<2>> accel;
@@ -66,7 +67,7 @@ TEST(ImplicitViscosity, SolutionSatisfiesTheExplicitOperatorAtTheNewVelocities) 
     ImplicitViscosity solver;
     solver.tolerance = 1e-12;
     std::vector<Vec<2>> a_visc;
-    const ViscousSolveReport report = solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{slip, 0.5 * patch.dp}, dt,
+    const ViscousSolveReport report = solver.solve<2>(patch.domain, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{slip, 0.5 * patch.dp}, dt,
                                                       patch.accel, a_visc);
     EXPECT_TRUE(report.converged);
     EXPECT_GT(report.iterations, 0);
@@ -97,7 +98,7 @@ TEST(ImplicitViscosity, ConservesMomentumBetweenFluidParticles) {
   ImplicitViscosity solver;
   solver.tolerance = 1e-13;
   std::vector<Vec<2>> a_visc;
-  solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{WallSlip::no_slip, 0.5 * patch.dp}, 1e-2, patch.accel,
+  solver.solve<2>(patch.domain, patch.list, patch.re, patch.c.n0, patch.c.lambda, ViscousWall{WallSlip::no_slip, 0.5 * patch.dp}, 1e-2, patch.accel,
                   a_visc);
   double scale = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) {
@@ -118,7 +119,7 @@ TEST(ImplicitViscosity, StaysBoundedWhereTheExplicitStepWouldExplode) {
   for (const auto& u : P.velocity) start = std::max(start, u.cwiseAbs().maxCoeff());
   ImplicitViscosity solver;
   std::vector<Vec<2>> a_visc;
-  const auto report = solver.solve<2>(P, patch.list, patch.re, patch.c.n0, patch.c.lambda,
+  const auto report = solver.solve<2>(patch.domain, patch.list, patch.re, patch.c.n0, patch.c.lambda,
                                       ViscousWall{WallSlip::no_slip, 0.5 * patch.dp}, 0.1, patch.accel, a_visc);
   EXPECT_TRUE(report.converged);
   double end = 0.0, mean_x = 0.0;
@@ -167,7 +168,7 @@ TEST(ImplicitViscosity, OnlyStiffParticlesAreUnknownsAndTheStepMatchesTheFullSol
   exact.tolerance = 1e-14;
   exact.max_iterations = 2000;
   std::vector<Vec<2>> a_full, a_split;
-  ASSERT_TRUE(exact.solve<2>(full.P, full.list, full.re, full.c.n0, full.c.lambda, wall, dt, full.accel, a_full).converged);
+  ASSERT_TRUE(exact.solve<2>(full.domain, full.list, full.re, full.c.n0, full.c.lambda, wall, dt, full.accel, a_full).converged);
   std::size_t fluid = 0, sediment = 0;
   for (std::size_t i = 0; i < full.P.size(); ++i) {
     if (full.P.kind[i] != Kind::fluid) continue;
@@ -178,7 +179,7 @@ TEST(ImplicitViscosity, OnlyStiffParticlesAreUnknownsAndTheStepMatchesTheFullSol
   }
   EXPECT_EQ(exact.unknowns(), fluid);
   ImplicitViscosity solver;  // tolerance 1e-8: stiff above 1e-4
-  ASSERT_TRUE(solver.solve<2>(split.P, split.list, split.re, split.c.n0, split.c.lambda, wall, dt, split.accel, a_split).converged);
+  ASSERT_TRUE(solver.solve<2>(split.domain, split.list, split.re, split.c.n0, split.c.lambda, wall, dt, split.accel, a_split).converged);
   EXPECT_EQ(solver.unknowns(), sediment);
   double worst_u = 0.0, worst_step = 0.0, scale = 0.0;
   for (std::size_t i = 0; i < split.P.size(); ++i) {

@@ -45,7 +45,7 @@ struct Channel {
     o.domain_lo = Vec<2>(0.0, -4 * re);
     o.domain_hi = Vec<2>(L, H + 4 * re);
     o.periodic_x = PeriodicX{0.0, L};
-    auto& P = sim.particles;
+    auto& P = sim.particles();
     if (walls) {
       const int layers = boundary_layers(o.re_over_dp);
       auto add = [&](const std::vector<BoundaryPoint>& points) {
@@ -91,7 +91,7 @@ TEST(Periodic, LatticeFillsThePlaneInX) {
   Channel ch(16, 12, Vec<2>::Zero(), false);
   auto& sim = ch.sim;
   sim.initialise();
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const double re = sim.re();
   const LatticeConstants lc = lattice_constants<2>(dp, re);
   ASSERT_GT(P.ghost_count(), 0u);
@@ -112,9 +112,9 @@ TEST(Periodic, LatticeFillsThePlaneInX) {
   const double U = 0.7, G = 3.0, c = 5.0;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     const double y = P.position[i][1];
-    sim.particles.velocity[i] = Vec<2>(U + G * y, c * y * y);
+    sim.particles().velocity[i] = Vec<2>(U + G * y, c * y * y);
   }
-  sync_ghosts(sim.particles);
+  sync_ghosts(sim.particles());
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     if (!interior_row(P.position[i][1], ch.H, re)) continue;
     const Vec<2> lap = mps_laplacian<2>(i, P.position, P.velocity, sim.neighbors(), re, lc.n0, lc.lambda);
@@ -130,7 +130,7 @@ TEST(Periodic, UniformFlowInStripIsUnchangedBySteps) {
   Channel ch(16, 12, Vec<2>(U, 0.0), false);
   auto& sim = ch.sim;
   sim.initialise();
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   std::vector<Vec<2>> start(P.real_count());
   for (std::size_t i = 0; i < P.real_count(); ++i) start[P.id[i]] = P.position[i];
   for (int s = 0; s < 20; ++s) {
@@ -158,7 +158,7 @@ TEST(Periodic, UniformChannelFlowKeepsGoingThroughWraps) {
   Channel ch(nx, ny, Vec<2>(U, 0.0), true);
   auto& sim = ch.sim;
   sim.initialise();
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const std::size_t real = P.real_count();
   const double half_skin = 0.5 * sim.options.skin_over_dp * dp;
   std::vector<Vec<2>> start(real);
@@ -167,7 +167,7 @@ TEST(Periodic, UniformChannelFlowKeepsGoingThroughWraps) {
   double worst_speed_error = 0.0, worst_beyond = 0.0;
   bool all_in_period_after_rebuild = true, count_kept = true;
   AfterEveryStep<2, std::function<void(const Simulation<2>&)>> observer([&](const Simulation<2>& s) {
-    const auto& Q = s.particles;
+    const auto& Q = s.particles();
     count_kept = count_kept && Q.real_count() == real;
     const bool rebuilt = s.neighbor_rebuilds() != rebuilds;
     rebuilds = s.neighbor_rebuilds();
@@ -305,7 +305,7 @@ TEST(Periodic, SimulationGhostsAreTheRealParticlesNearTheEnds) {
   Channel ch(20, 6, Vec<2>(0.3, 0.0), true);
   auto& sim = ch.sim;
   sim.initialise();
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   const double margin = sim.re() + sim.options.skin_over_dp * dp;
   std::size_t expected = 0;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
@@ -337,9 +337,9 @@ TEST(Periodic, RefusesBodiesShortPeriodsAndWallsOutsideThePeriod) {
   }
   {
     Channel ch(16, 4, Vec<2>::Zero(), false);
-    const std::size_t i = ch.sim.particles.add(Vec<2>(ch.L, -0.5 * dp), Kind::wall, 0, rho, 1e-3);
-    ch.sim.particles.wall_normal[i] = Vec<2>(0.0, 1.0);
-    ch.sim.particles.wall_depth[i] = 0.5 * dp;
+    const std::size_t i = ch.sim.particles().add(Vec<2>(ch.L, -0.5 * dp), Kind::wall, 0, rho, 1e-3);
+    ch.sim.particles().wall_normal[i] = Vec<2>(0.0, 1.0);
+    ch.sim.particles().wall_depth[i] = 0.5 * dp;
     EXPECT_THROW(ch.sim.initialise(), std::invalid_argument);
   }
 }
@@ -353,7 +353,7 @@ TEST(Periodic, OneAndTwoThreadsGiveIdenticalStates) {
     Channel ch(64, 64, Vec<2>::Zero(), true, WallSlip::no_slip, 0.01);
     auto& sim = ch.sim;
     sim.options.gravity = Vec<2>(2.0, 0.0);
-    auto& P = sim.particles;
+    auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i)
       if (P.kind[i] == Kind::fluid)
         P.velocity[i] = Vec<2>(1.0, 0.05 * std::sin(2.0 * M_PI * P.position[i][0] / ch.L));
@@ -364,7 +364,7 @@ TEST(Periodic, OneAndTwoThreadsGiveIdenticalStates) {
       EXPECT_FALSE(sim.step(dt, limit));
     }
     EXPECT_GT(sim.neighbor_rebuilds(), 10);
-    return std::move(sim.particles);
+    return std::move(sim.particles());
   };
   const int saved = thread_count();
   const Particles<2> one = run(1), two = run(2);
@@ -392,7 +392,7 @@ TEST(Periodic, ImplicitViscosityOneAndTwoThreadsGiveIdenticalStates) {
     auto& sim = ch.sim;
     sim.options.gravity = Vec<2>(2.0, 0.0);
     sim.options.viscous_scheme = ViscousScheme::implicit;
-    auto& P = sim.particles;
+    auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i)
       if (P.kind[i] == Kind::fluid) {
         P.velocity[i] = Vec<2>(0.0, 0.05 * std::sin(2.0 * M_PI * P.position[i][0] / ch.L));
@@ -404,7 +404,7 @@ TEST(Periodic, ImplicitViscosityOneAndTwoThreadsGiveIdenticalStates) {
       EXPECT_FALSE(sim.step(dt, limit));
     }
     EXPECT_GT(sim.last_viscous_solve().iterations, 0);
-    return std::move(sim.particles);
+    return std::move(sim.particles());
   };
   const int saved = thread_count();
   const Particles<2> one = run(1), two = run(2);
@@ -437,7 +437,7 @@ TEST(Periodic, PoiseuilleFlowIsUniformInX) {
   const double nu = mu / rho, H = ch.H, u_max = g * H * H / (8 * nu);
   const AdvanceResult result = advance<2>(sim, 6.0 * H * H / (M_PI * M_PI * nu));
   ASSERT_EQ(result.outcome, AdvanceResult::Outcome::reached_end);
-  const auto& P = sim.particles;
+  const auto& P = sim.particles();
   std::vector<double> row_min(ny, 1e300), row_max(ny, -1e300);
   double worst_profile = 0.0, worst_v = 0.0;
   for (std::size_t i = 0; i < P.real_count(); ++i) {

@@ -109,7 +109,7 @@ TEST(RigidCoupling, MovingBodyEntersTheCflLimit) {
   const double at_rest = sim.allowed_time_step().first;
   const double speed = 40.0;
   sim.bodies()->world.set_velocity(0, rigid::Vec2(speed, 0.0), 0.0);
-  sim.bodies()->place_particles(sim.particles, sim.time());
+  sim.bodies()->place_particles(sim.particles(), sim.time());
   const auto [dt, limit] = sim.allowed_time_step();
   EXPECT_EQ(limit, TimeStepLimit::cfl);
   EXPECT_NEAR(dt, sim.options.cfl * sim.options.dp / (sim.options.sound_speed + speed), 1e-12);
@@ -124,9 +124,9 @@ TEST(RigidCoupling, AcceleratingBodyEntersTheForceLimit) {
   // 2 m/s lost in 1e-5 s: 2e5 m/s^2, whose force limit 0.25 sqrt(dp / a) = 5.6e-5 s is below the CFL limit.
   const double dv = 2.0, interval = 1e-5;
   sim.bodies()->world.set_velocity(0, rigid::Vec2(dv, 0.0), 0.0);
-  sim.bodies()->place_particles(sim.particles, 0.0);
+  sim.bodies()->place_particles(sim.particles(), 0.0);
   sim.bodies()->world.set_velocity(0, rigid::Vec2(0.0, 0.0), 0.0);
-  sim.bodies()->place_particles(sim.particles, interval);
+  sim.bodies()->place_particles(sim.particles(), interval);
   const auto [dt, limit] = sim.allowed_time_step();
   EXPECT_EQ(limit, TimeStepLimit::force);
   EXPECT_NEAR(dt, sim.options.force_number * std::sqrt(sim.options.dp / (dv / interval)), 1e-9 * dt);
@@ -166,7 +166,7 @@ bodies:
   auto momentum = [&]() {
     // Two scalars rather than a Vec<2> sum: GCC 12 warns (falsely) of an uninitialised vector register otherwise.
     double mx = 0.0, my = 0.0;
-    const auto& P = sim.particles;
+    const auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i)
       if (P.kind[i] == Kind::fluid) {
         mx += P.density[i] * volume * P.velocity[i][0];
@@ -193,8 +193,8 @@ bodies:
     EXPECT_EQ(sim.viscous_solves().unconverged, 0);
     EXPECT_EQ(sim.limit_counts()[int(TimeStepLimit::viscous)], 0);
     double most = 0.0;
-    for (std::size_t i = 0; i < sim.particles.size(); ++i)
-      if (sim.particles.kind[i] == Kind::fluid) most = std::max(most, sim.particles.viscosity[i]);
+    for (std::size_t i = 0; i < sim.particles().size(); ++i)
+      if (sim.particles().kind[i] == Kind::fluid) most = std::max(most, sim.particles().viscosity[i]);
     EXPECT_GT(most, 100.0);  // the rheology set it (the scene made the particles with 0.01 Pa s)
   }
 }

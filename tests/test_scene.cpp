@@ -163,7 +163,7 @@ walls:
   for (const double columns : {19.0, 19.0005, 18.9995}) {
     const double period = columns * a;
     auto scene = build_scene_text("periodic_seam", layer(period));
-    const auto& P = scene->simulation->particles;
+    const auto& P = scene->simulation->particles();
     std::map<long, int> per_row;  // row index -> points (fluid and wall alike)
     double closest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < P.real_count(); ++i) {
@@ -199,7 +199,7 @@ method: {wall_pressure: extrapolated, initial_state: lattice}
   const auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
   const double dp = 0.01, h = row_spacing(LatticeKind::hexagonal, dp);
   EXPECT_LE(std::abs(scene->lattice_offset[1]), 0.5 * h + 1e-15);
-  const auto& P = scene->simulation->particles;
+  const auto& P = scene->simulation->particles();
   double highest_below = -1.0;
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::fluid && std::abs(P.position[i][0] - 0.5) < 0.1 && P.position[i][1] < 0.25)

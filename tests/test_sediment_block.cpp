@@ -53,10 +53,10 @@ TEST(SedimentBlock, WithEnoughYieldStressStaysPut) {
   const std::uint8_t phase = scene->slides[0].phase;
   auto& sim = *scene->simulation;
   const double dp = sim.options.dp;
-  const auto start = slide_positions(sim.particles, phase);
+  const auto start = slide_positions(sim.particles(), phase);
   double most = 0.0;
   ASSERT_TRUE(run_scene(*scene, [&](const Simulation<2>& s) {
-    most = std::max(most, largest_displacement(s.particles, phase, start));
+    most = std::max(most, largest_displacement(s.particles(), phase, start));
   }));
   std::printf("tau_y %.0f Pa = %.2f rho' g h (%.0f Pa): largest displacement over 1 s %.3g m = %.3f dp, %zu particles, "
               "%ld steps, %ld solves, %ld unconverged\n",
@@ -89,13 +89,13 @@ TEST(SedimentBlock, WithoutYieldStressSlumps) {
   auto& sim = *scene->simulation;
   const double dp = sim.options.dp;
   const Vec<2> right(1.0, 0.0);
-  const SlideFront before = measure_slide_front(sim.particles, phase, right, dp, 2.0 * dp);
+  const SlideFront before = measure_slide_front(sim.particles(), phase, right, dp, 2.0 * dp);
   SlideFront at_half;
   bool half = false;
   ASSERT_TRUE(run_scene(*scene, [&](const Simulation<2>& s) {
-    if (!half && s.time() >= 0.5) at_half = measure_slide_front(s.particles, phase, right, dp, 2.0 * dp), half = true;
+    if (!half && s.time() >= 0.5) at_half = measure_slide_front(s.particles(), phase, right, dp, 2.0 * dp), half = true;
   }));
-  const SlideFront after = measure_slide_front(sim.particles, phase, right, dp, 2.0 * dp);
+  const SlideFront after = measure_slide_front(sim.particles(), phase, right, dp, 2.0 * dp);
   std::printf("tau_y 0, K 0.1 Pa s: thickness %.3f -> %.3f (0.5 s) -> %.3f m (1 s), front x %.3f -> %.3f -> %.3f m, "
               "%ld steps\n",
               before.thickness_max, at_half.thickness_max, after.thickness_max, before.front[0], at_half.front[0],
@@ -141,7 +141,7 @@ output: {{snapshots: false}}
   auto scene = build_scene_text(fmt::format("mc_layer_{:.0f}", slope_deg), yaml);
   auto& sim = *scene->simulation;
   // Down-slope displacement with the periodic wrap undone: particles are followed by id, step by step.
-  std::unordered_map<std::uint32_t, Vec<2>> start = slide_positions(sim.particles, 0), last = start, unwrapped = start;
+  std::unordered_map<std::uint32_t, Vec<2>> start = slide_positions(sim.particles(), 0), last = start, unwrapped = start;
   SlopeRun r;
   r.dp = sim.options.dp;
   auto mean_along = [&] {
@@ -151,7 +151,7 @@ output: {{snapshots: false}}
   };
   bool sampled = false;
   EXPECT_TRUE(run_scene(*scene, [&](const Simulation<2>& s) {
-    const auto& P = s.particles;
+    const auto& P = s.particles();
     for (std::size_t i = 0; i < P.real_count(); ++i) {
       if (P.kind[i] != Kind::fluid) continue;
       Vec<2> step = P.position[i] - last.at(P.id[i]);

@@ -68,10 +68,10 @@ output: {{snapshots: false}}
   const std::uint8_t phase = scene->slides[0].phase;
   LayerRun r = checked(*scene, dp);
   // Along the slope with the periodic wrap undone: particles followed by id, step by step.
-  std::unordered_map<std::uint32_t, Vec<2>> start = slide_positions(sim.particles, phase), last = start,
+  std::unordered_map<std::uint32_t, Vec<2>> start = slide_positions(sim.particles(), phase), last = start,
                                              unwrapped = start;
   EXPECT_TRUE(run_scene(*scene, [&](const Simulation<2>& s) {
-    const auto& P = s.particles;
+    const auto& P = s.particles();
     for (std::size_t i = 0; i < P.real_count(); ++i) {
       if (P.kind[i] != Kind::fluid || P.phase[i] != phase) continue;
       Vec<2> step = P.position[i] - last.at(P.id[i]);
@@ -137,11 +137,11 @@ output: {{snapshots: false}}
   auto& sim = *scene->simulation;
   const std::uint8_t phase = scene->slides[0].phase;
   LayerRun r = checked(*scene, dp);
-  const Vec<2> c0 = centre_of_mass(sim.particles, phase), down_slope(std::cos(35.0 * M_PI / 180.0),
+  const Vec<2> c0 = centre_of_mass(sim.particles(), phase), down_slope(std::cos(35.0 * M_PI / 180.0),
                                                                       -std::sin(35.0 * M_PI / 180.0));
   EXPECT_TRUE(run_scene(*scene, [](const Simulation<2>&) {}));
-  r.centre = (centre_of_mass(sim.particles, phase) - c0).dot(down_slope);
-  r.rise = centre_of_mass(sim.particles, phase)[1] - c0[1];
+  r.centre = (centre_of_mass(sim.particles(), phase) - c0).dot(down_slope);
+  r.rise = centre_of_mass(sim.particles(), phase)[1] - c0[1];
   std::printf("triangle under water, pore_pressure %s: centre of mass moved %.4f m (%.2f dp) down the slope in "
               "0.5 s; slide check: %s\n",
               pore_pressure.c_str(), r.centre, r.centre / dp, r.criterion.c_str());

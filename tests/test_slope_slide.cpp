@@ -97,15 +97,15 @@ SlopeMotion slide_down(double slope_deg, LatticeKind lattice, double dp, double 
   const double b = slope_deg * M_PI / 180.0;
   const Vec<2> along(std::cos(b), -std::sin(b));
   auto& sim = *scene->simulation;
-  const auto start = slide_positions(sim.particles, phase);
+  const auto start = slide_positions(sim.particles(), phase);
   SlopeMotion m;
   m.dp = sim.options.dp;
   std::vector<double> t{0.0}, s{0.0};
-  const double s0 = centre_of_mass(sim.particles, phase).dot(along);
+  const double s0 = centre_of_mass(sim.particles(), phase).dot(along);
   EXPECT_TRUE(run_scene(*scene, [&](const Simulation<2>& sm) {
     t.push_back(sm.time());
-    s.push_back(centre_of_mass(sm.particles, phase).dot(along) - s0);
-    m.largest = std::max(m.largest, largest_displacement(sm.particles, phase, start));
+    s.push_back(centre_of_mass(sm.particles(), phase).dot(along) - s0);
+    m.largest = std::max(m.largest, largest_displacement(sm.particles(), phase, start));
   }));
   m.acceleration = fitted_acceleration(t, s);
   return m;
@@ -187,7 +187,7 @@ TEST(SlopeSlide, WaterAndSlideStartOnTheSlopesRows) {
   const std::string settled = "initial_state: settled, settling_time: 0.2";
   yaml.replace(yaml.find(settled), settled.size(), "initial_state: lattice");  // the particles as placed
   auto scene = build_scene_text("slope_rows", yaml);
-  const auto& P = scene->simulation->particles;
+  const auto& P = scene->simulation->particles();
   const double b = 35.0 * M_PI / 180.0, h = row_spacing(LatticeKind::hexagonal, dp);
   const Vec<2> top(0.0, 1.2 * std::sin(b)), normal(std::sin(b), std::cos(b));
   const std::uint8_t phase = scene->slides[0].phase;

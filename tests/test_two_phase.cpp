@@ -108,7 +108,7 @@ LayersResult run_layers() {
   auto scene = build_scene_text("two_layers", layers_scene());
   const auto& opt = scene->simulation->options;
   const double dp = opt.dp, g = -opt.gravity[1], h = row_spacing(LatticeKind::hexagonal, dp);
-  const auto& P0 = scene->simulation->particles;
+  const auto& P0 = scene->simulation->particles();
   const auto counts0 = fluid_count_by_phase(P0);
   EXPECT_EQ(counts0.size(), 2u);
   // The interface's particles: the sediment's top row at t = 0 (after settling), by id.
@@ -143,7 +143,7 @@ LayersResult run_layers() {
                            {"sand 0.03-0.08", 0.03, 0.08}};
   LayersResult r;
   r.stable = run_scene(*scene, [&](const Simulation<2>& sim) {
-    const auto& P = sim.particles;
+    const auto& P = sim.particles();
     for (std::size_t i = 0; i < P.real_count(); ++i)
       if (P.kind[i] == Kind::fluid)
         r.max_speed_over_sqrt_gh = std::max(r.max_speed_over_sqrt_gh, P.velocity[i].norm() / sqrt_gh);
@@ -159,7 +159,7 @@ LayersResult run_layers() {
         }
     }
   });
-  const auto& P = scene->simulation->particles;
+  const auto& P = scene->simulation->particles();
   r.interface_rms_over_dp = interface_rms(P);
   r.counts_kept = fluid_count_by_phase(P) == counts0;
   std::printf("two layers at rest, dp = %g m, 2 s: %zu water + %zu sediment particles, interface row of %zu\n", dp,
@@ -261,7 +261,7 @@ struct DamBreakRun {
 DamBreakRun run_submerged_dam_break(double dp) {
   auto scene = build_scene_text("submerged_dam_break_" + std::to_string(int(std::lround(dp * 1000))), dam_break_scene(dp));
   const double re = scene->simulation->options.re_over_dp * dp;
-  const auto counts0 = fluid_count_by_phase(scene->simulation->particles);
+  const auto counts0 = fluid_count_by_phase(scene->simulation->particles());
   EXPECT_EQ(counts0.size(), 2u);
   const std::uint8_t sediment = counts0.rbegin()->first;
   auto front_of = [&](const Particles<2>& P) {
@@ -270,16 +270,16 @@ DamBreakRun run_submerged_dam_break(double dp) {
       if (P.kind[i] == Kind::fluid && P.phase[i] == sediment) f = std::max(f, P.position[i][0]);
     return f;
   };
-  const double front0 = front_of(scene->simulation->particles);
+  const double front0 = front_of(scene->simulation->particles());
   DamBreakRun r;
   double worst_time = 0.0, next_sample = 0.0;
   r.stable = run_scene(*scene, [&](const Simulation<2>& sim) {
     if (sim.time() < next_sample) return;
     next_sample += 0.02;
-    const std::size_t n = water_inside_sediment(sim.particles, re);
+    const std::size_t n = water_inside_sediment(sim.particles(), re);
     if (n > r.worst_inside) r.worst_inside = n, worst_time = sim.time();
   });
-  const auto& P = scene->simulation->particles;
+  const auto& P = scene->simulation->particles();
   r.counts_kept = fluid_count_by_phase(P) == counts0;
   r.front_moved = front_of(P) - front0;
   std::printf("submerged dam break, dp = %g m, 1 s: sediment front moved %.3f m; water particles inside the sediment: "

@@ -111,7 +111,7 @@ walls:
 method: {initial_state: lattice}
 )");
   auto& sim = *scene->simulation;
-  auto& P = sim.particles;
+  auto& P = sim.particles();
   // The lowest fluid particle of the left column, thrown down at 1000 m/s: it goes through the floor in one step.
   std::size_t thrown = P.size();
   for (std::size_t i = 0; i < P.size(); ++i)

@@ -164,7 +164,7 @@ TankFigures run_tank(const std::string& model, double dp, double a_over_g, std::
     if (sim.time() < next_sample) return;
     next_sample += 0.01;
     ++samples;
-    const auto& P = sim.particles;
+    const auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i) {
       const Vec<2>& x = P.position[i];
       const double p_exact = exact.pressure(x);
@@ -267,7 +267,7 @@ walls:
 )";
   auto scene = build_scene_text("wall_column", yaml);
   const double scale = rho * g * column_h;
-  const auto& P0 = scene->simulation->particles;
+  const auto& P0 = scene->simulation->particles();
   std::map<std::uint32_t, Vec<2>> start;
   std::map<std::uint32_t, double> mean_p;
   for (std::size_t i = 0; i < P0.size(); ++i) start[P0.id[i]] = P0.position[i];
@@ -277,14 +277,14 @@ walls:
     last_t = t;
     const double w = std::pow(std::sin(3.14159265358979323846 * t / t_end), 2) * dt;
     weight_sum += w;
-    const auto& P = sim.particles;
+    const auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i)
       if (P.kind[i] != Kind::dummy) mean_p[P.id[i]] += w * P.pressure[i];
   });
   ColumnFigures f;
   double wall2 = 0.0, force = 0.0, fluid2 = 0.0;
   long wall_n = 0, fluid_n = 0;
-  const auto& P = scene->simulation->particles;
+  const auto& P = scene->simulation->particles();
   double first_layer_x = -1e9;
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::wall && P.wall_normal[i][0] > 1.0 - 1e-9) first_layer_x = std::max(first_layer_x, start[P.id[i]][0]);

@@ -132,7 +132,7 @@ int check_command(const RunArguments& args) {
     try {
       const double fluid = double(scene->fluid_count);
       std::cout << recommendation_report(args.sweep_dir, args.target_error, fluid,
-                                         double(sim.particles.real_count()) - fluid, steps, sim.options.dp);
+                                         double(sim.particles().real_count()) - fluid, steps, sim.options.dp);
     } catch (const std::exception& e) {
       std::cerr << "slide: --with " << args.sweep_dir.string() << ": " << e.what() << "\n";
       return 2;
@@ -157,10 +157,10 @@ class InterruptWatch : public StepObserver<2> {
 // holds (a third of the particles' arrays: a whole copy had been 160 of the bench case's 560 heap bytes a particle).
 class LastGoodState : public StepObserver<2> {
  public:
-  explicit LastGoodState(const Simulation<2>& sim) : snapshot(sim.particles), time(sim.time()), step(sim.step_count()) {}
+  explicit LastGoodState(const Simulation<2>& sim) : snapshot(sim.particles()), time(sim.time()), step(sim.step_count()) {}
   bool before_step(const Simulation<2>& sim) override {
     if (sim.step_count() % every == 0) {
-      snapshot.assign(sim.particles);
+      snapshot.assign(sim.particles());
       time = sim.time();
       step = sim.step_count();
     }
@@ -183,7 +183,7 @@ class ProgressLine : public StepObserver<2> {
     if (Clock::now() < next_) return;
     next_ = Clock::now() + std::chrono::seconds(1);
     const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
-    const double rate = double(sim.particles.real_count()) * double(sim.step_count() - start_step_) / wall;
+    const double rate = double(sim.particles().real_count()) * double(sim.step_count() - start_step_) / wall;
     const double eta = wall / (sim.time() - start_time_) * (end_ - sim.time());
     const std::size_t left = sim.left_the_domain().size();
     std::cerr << fmt::format("\r{}t = {:.5f} / {:.5g} s  dt = {:.3e} s  {:.3g} M particle-steps/s  ETA {:.0f} s{}   ",
@@ -483,7 +483,7 @@ int run_command(const RunArguments& args) {
   const long steps_at_loop_start = sim.step_count();
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
   auto loop_rate = [&](double wall) {
-    return wall > 0 ? double(sim.particles.real_count()) * double(sim.step_count() - steps_at_loop_start) / wall : 0.0;
+    return wall > 0 ? double(sim.particles().real_count()) * double(sim.step_count() - steps_at_loop_start) / wall : 0.0;
   };
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
@@ -501,7 +501,7 @@ int run_command(const RunArguments& args) {
     j["status"] = status;
     j["message"] = message;
     j["threads"] = thread_count();
-    j["particles"] = {{"total", sim.particles.real_count()}, {"fluid", scene->fluid_count},
+    j["particles"] = {{"total", sim.particles().real_count()}, {"fluid", scene->fluid_count},
                       {"wall", scene->wall_count},      {"dummy", scene->dummy_count}};
     j["derived"] = {{"n0", sim.lattice.n0},
                     {"lambda", sim.lattice.lambda},
@@ -561,7 +561,7 @@ int run_command(const RunArguments& args) {
     if (result.outcome == AdvanceResult::Outcome::stopped) {
       // The checkpoint first: it records the series as a straight run has it, without the final snapshot below.
       checkpoints.write();
-      outputs.write_snapshot(sim.particles, sim.time(), sim.step_count());
+      outputs.write_snapshot(sim.particles(), sim.time(), sim.step_count());
       outputs.flush();
       const int signal = interrupted;
       const std::string why = signal == 0 ? "stopped as --stop-at asked" : signal == SIGTERM ? "interrupted by SIGTERM"

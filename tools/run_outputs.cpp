@@ -174,7 +174,7 @@ void RunOutputs::sample_slides() {
   if (!slide_front_) return;
   const double dp = sim_.options.dp;
   for (const auto& s : scene_.slides) {
-    const SlideFront f = measure_slide_front(sim_.particles, s.phase, s.front_direction, dp, 2.0 * dp);
+    const SlideFront f = measure_slide_front(sim_.particles(), s.phase, s.front_direction, dp, 2.0 * dp);
     const double row[] = {f.front[0], f.front[1], s.front_direction.dot(f.front), f.thickness_max,
                           double(f.particles)};
     slide_front_->add_labelled_row(sim_.time(), s.name, row);
@@ -187,8 +187,8 @@ std::vector<std::pair<std::string, RunOutputs::ModelSurface>> RunOutputs::model_
   const double dp = sim_.options.dp, width = 2.0 * dp;
   std::vector<std::pair<std::string, ModelSurface>> out;
   for (const auto& s : scene_.slides) {
-    const SlideFront f = measure_slide_front(sim_.particles, s.phase, Vec<2>(1.0, 0.0), dp, width);
-    out.push_back({s.name, {slide_upper_surface(sim_.particles, s.phase, dp, width), f.front[0] + 0.5 * dp}});
+    const SlideFront f = measure_slide_front(sim_.particles(), s.phase, Vec<2>(1.0, 0.0), dp, width);
+    out.push_back({s.name, {slide_upper_surface(sim_.particles(), s.phase, dp, width), f.front[0] + 0.5 * dp}});
   }
   if (const auto& bodies = sim_.bodies())
     for (std::size_t b = 0; b < bodies->size(); ++b) {
@@ -244,7 +244,7 @@ void RunOutputs::flush() {
 }
 
 void RunOutputs::write_initial() {
-  write_snapshot(sim_.particles, sim_.time(), sim_.step_count());
+  write_snapshot(sim_.particles(), sim_.time(), sim_.step_count());
   sample();
   sample_bodies();
   sample_profiles();
@@ -267,7 +267,7 @@ void RunOutputs::after_step(Simulation<2>& sim, double) {
     next_body_sample_ = next_after(next_body_sample_, scene_.body_sample_interval, t);
   }
   if (t >= next_snapshot_ - eps_) {
-    write_snapshot(sim.particles, t, sim.step_count());
+    write_snapshot(sim.particles(), t, sim.step_count());
     flush();
     next_snapshot_ = next_after(next_snapshot_, scene_.output.snapshot_interval, t);
   }
@@ -277,7 +277,7 @@ void RunOutputs::write_final() {
   const double interval = scene_.output.snapshot_interval;
   const double t = sim_.time();
   if (snapshots_ && (snapshots_->count() == 0 || interval <= 0 || t > next_snapshot_ - interval + eps_))
-    write_snapshot(sim_.particles, t, sim_.step_count());
+    write_snapshot(sim_.particles(), t, sim_.step_count());
   if (t > last_sample_time_ + eps_) sample();
   if (bodies_ && t > last_body_sample_time_ + eps_) sample_bodies();
   flush();

@@ -1,0 +1,101 @@
+#pragma once
+// The domain seam (DESIGN.md, "One domain seam"): the particles this process owns, their ghost copies, the halo each
+// stage declares its neighbours read, and every reduction over particles. A stage computes the owned particles only
+// (owned_count()), then refreshes the fields the next stage reads of its neighbours; the time-step limits, the checks
+// and the largest speed reduce over the owned particles here.
+//
+// Today the ghosts are the periodic images (fluid/periodic.hpp: behind the owned particles in every array, rebuilt
+// with the neighbour list, refreshed between). Particles owned by another process will be a second kind of ghost
+// behind the same calls: refresh() becomes a halo exchange, the reductions combine across processes, and the stages
+// do not change. Maxima are exact in any order; sums over particles are to be taken in an order that does not depend
+// on the split (global ids), so that results stay the same to the bit for any number of threads and processes.
+#include <array>
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <vector>
+
+#include "fluid/parallel.hpp"
+#include "fluid/particles.hpp"
+#include "fluid/periodic.hpp"
+
+namespace slide {
+
+// What a stage's neighbours read beyond the motion: each is one per-particle array carried to the ghosts. `motion` is
+// position (shifted by the ghost's offset), velocity and acceleration, which every stage that moves particles changes.
+enum class HaloField { motion, velocity, number_density, pressure, gradient_correction, viscosity, wall_fraction, wall_fill };
+
+template <int D>
+class Domain {
+ public:
+  // The owned particles, then their ghosts (Particles::real_count() are owned).
+  Particles<D> particles;
+
+  // The period along x, if any (fluid/periodic.hpp); set before the first rebuild of the ghosts.
+  void set_period(const std::optional<PeriodicX>& period) { period_ = period; }
+  const std::optional<PeriodicX>& period() const { return period_; }
+
+  std::size_t owned_count() const { return particles.real_count(); }
+
+  // Before the owned particles are re-sorted or removed: the ghosts go (every array back to the owned particles).
+  void drop_ghosts() {
+    if (period_) remove_ghosts(particles);
+  }
+  // Owned particles that crossed an end of the period come back into it (no ghosts present).
+  void wrap_into_period() {
+    if (period_) wrap_positions(particles, *period_);
+  }
+  // After a re-sort: ghosts afresh for the owned particles within `depth` (the neighbour list's radius) of the domain's
+  // edges. Returns whether there are any.
+  bool make_ghosts(double depth) {
+    if (period_) add_ghosts(particles, *period_, depth);
+    return particles.ghost_count() != 0;
+  }
+
+  // The owned particles' `fields` carried to their ghosts: what the next stage reads of its neighbours.
+  void refresh(std::initializer_list<HaloField> fields) {
+    if (particles.ghost_count() == 0) return;
+    for (const HaloField f : fields) refresh(f);
+  }
+
+  // The largest f(i) over the owned particles, from `init` (exact: max does not depend on the order).
+  template <class F>
+  double max_over_owned(double init, F&& f) const {
+    return parallel_max(owned_count(), init, f);
+  }
+  // Several maxima in one pass (component k of f(i) into component k).
+  template <std::size_t K, class F>
+  std::array<double, K> max_each_over_owned(const std::array<double, K>& init, F&& f) const {
+    return parallel_max_each<K>(owned_count(), init, f);
+  }
+  // Sums by group over the owned particles (a rigid body's force and torque over its boundary particles):
+  // add(sums[g], i) for every owned i with g = group_of(i) >= 0, serially, in the particles' order. That order is
+  // the same for any thread count; across processes the sums will have to be taken in an order that does not depend on
+  // the split (global ids, or an exact accumulator), which rounds differently from this one.
+  template <class Sum, class GroupOf, class Add>
+  void sum_by_group(std::vector<Sum>& sums, GroupOf&& group_of, Add&& add) const {
+    for (std::size_t i = 0; i < owned_count(); ++i) {
+      const int g = group_of(i);
+      if (g >= 0) add(sums[static_cast<std::size_t>(g)], i);
+    }
+  }
+
+ private:
+  void refresh(HaloField f) {
+    auto& P = particles;
+    switch (f) {
+      case HaloField::motion: sync_ghost_motion(P); return;
+      case HaloField::velocity: copy_to_ghosts(P, P.velocity); return;
+      case HaloField::number_density: copy_to_ghosts(P, P.number_density); return;
+      case HaloField::pressure: copy_to_ghosts(P, P.pressure); return;
+      case HaloField::gradient_correction: copy_to_ghosts(P, P.gradient_correction); return;
+      case HaloField::viscosity: copy_to_ghosts(P, P.viscosity); return;
+      case HaloField::wall_fraction: copy_to_ghosts(P, P.wall_fraction); return;
+      case HaloField::wall_fill: copy_to_ghosts(P, P.wall_fill); return;
+    }
+  }
+
+  std::optional<PeriodicX> period_;
+};
+
+}  // namespace slide
