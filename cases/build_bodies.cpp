@@ -71,7 +71,7 @@ rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, co
 }
 
 // The Bullet world, with the wall faces as static segments when bodies collide with the walls.
-std::shared_ptr<RigidBodies> make_rigid_world(const SceneBuild& b) {
+std::shared_ptr<RigidBodies> make_rigid_world(const SceneBuild<2>& b) {
   auto bodies = std::make_shared<RigidBodies>(b.sim->options.gravity,
                                               b.r["rigid"]["collision_margin"].as<double>() * b.dp);
   if (b.r["rigid"]["wall_contact"].as<bool>())
@@ -80,7 +80,7 @@ std::shared_ptr<RigidBodies> make_rigid_world(const SceneBuild& b) {
   return bodies;
 }
 
-void check_in_front_of_walls(const SceneBuild& b, const std::vector<rigid::Vec2>& outline, const std::string& path) {
+void check_in_front_of_walls(const SceneBuild<2>& b, const std::vector<rigid::Vec2>& outline, const std::string& path) {
   for (const auto& v : outline)
     if (!b.faces.empty() && signed_face_distance(b.faces, from_rigid(v)) < -1e-6 * b.dp)
       throw SceneError(path + ".shape", fmt::format("vertex ({:.6g}, {:.6g}) lies behind a wall face", v[0], v[1]));
@@ -106,7 +106,7 @@ rigid::BodySpec rigid_spec(const YAML::Node& bn, const std::vector<rigid::Vec2>&
 }
 
 // The law of a prescribed body (bodies[k].prescribed): a series from a CSV file, or ln_cosh.
-rigid::PrescribedMotion read_prescribed(const SceneBuild& b, const YAML::Node& bn, const std::string& path,
+rigid::PrescribedMotion read_prescribed(const SceneBuild<2>& b, const YAML::Node& bn, const std::string& path,
                                         const std::vector<rigid::Vec2>& outline) {
   if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
   const YAML::Node pr = bn["prescribed"];
@@ -138,7 +138,7 @@ rigid::PrescribedMotion read_prescribed(const SceneBuild& b, const YAML::Node& b
 }
 
 // How the body moves: free or prescribed, held until release_time, held or free while the water settles.
-BodyMotion read_motion(const SceneBuild& b, const YAML::Node& bn, const std::string& path,
+BodyMotion read_motion(const SceneBuild<2>& b, const YAML::Node& bn, const std::string& path,
                        const std::vector<rigid::Vec2>& outline) {
   BodyMotion motion;
   motion.release_time = bn["release_time"].as<double>();
@@ -182,7 +182,7 @@ std::vector<BoundaryPoint> body_boundary_points(const std::vector<rigid::Vec2>& 
 
 // The body's boundary particles (those inside the outline, none within dp/2 of another), moving with body `body`.
 // Returns how many were added.
-std::size_t add_body_particles(SceneBuild& b, const std::vector<BoundaryPoint>& pts,
+std::size_t add_body_particles(SceneBuild<2>& b, const std::vector<BoundaryPoint>& pts,
                                const std::vector<rigid::Vec2>& outline, int body, double density,
                                const std::string& path) {
   Particles<2>& P = b.particles();
@@ -204,7 +204,7 @@ std::size_t add_body_particles(SceneBuild& b, const std::vector<BoundaryPoint>& 
 }
 
 // model: rigid. A Bullet body, its boundary particles, and its report.
-void add_rigid_body(SceneBuild& b, const YAML::Node& bn, const std::string& path,
+void add_rigid_body(SceneBuild<2>& b, const YAML::Node& bn, const std::string& path,
                     const std::vector<rigid::Vec2>& outline) {
   rigid::BodySpec spec = rigid_spec(bn, outline, path);
   const BodyMotion motion = read_motion(b, bn, path, outline);
@@ -254,7 +254,7 @@ void add_lattice_sums(BodyReport& rep, const std::vector<rigid::Vec2>& v, double
 
 // A deformable slide: its phase and outline; its particles are placed with the water (fill_fluid_regions). Keys of
 // the rigid model (mass, friction, motion, ...) are left as they are: switching back uses them again.
-void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string& path,
+void add_deformable_slide(SceneBuild<2>& b, const YAML::Node& bn, const std::string& path,
                           const std::vector<rigid::Vec2>& outline, RheologyModel model) {
   const double density = bn["density"].as<double>();
   if (!(density > 0.0))
@@ -279,7 +279,7 @@ void add_deformable_slide(SceneBuild& b, const YAML::Node& bn, const std::string
 }
 
 // The density its weight acts with at rest: less the water's where its centroid starts below the still-water level.
-double weight_density(const SceneBuild& b, const SceneBuild::Slide& slide, double density) {
+double weight_density(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide, double density) {
   const bool below = std::isfinite(b.still_level) && rigid::centroid(slide.outline)[1] < b.still_level;
   return density - (below ? b.phases.phases[0].density : 0.0);
 }
@@ -290,7 +290,7 @@ double weight_density(const SceneBuild& b, const SceneBuild::Slide& slide, doubl
 // H = 3.83 c / (rho' g), the critical height of a vertical cut from Taylor's stability number 0.261), so a strength
 // at zero normal stress of rho' g H or more holds it rigid at rest. (Overhangs can carry more; the warning is for the
 // shapes slides have.)
-void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, const Rheology& rheology,
+void warn_if_rigid_at_rest(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide, const Rheology& rheology,
                            SlideReport& rep) {
   double strength = 0.0;
   if (const auto* hb = std::get_if<HerschelBulkley>(&rheology)) strength = hb->yield_stress_pa;
@@ -328,7 +328,7 @@ void warn_if_rigid_at_rest(const SceneBuild& b, const SceneBuild::Slide& slide, 
 //                                     (its buoyant weight's component along the face; the water's head adds none);
 // it holds strength_at_rest(sigma') (tau_y, c + sigma' tan(phi), mu_s sigma', nothing), and with a basal friction mu_b
 // the wall holds mu_b sigma' at its base.
-void finish_slide_report(const SceneBuild& b, const SceneBuild::Slide& slide, SlideReport& rep) {
+void finish_slide_report(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide, SlideReport& rep) {
   const Particles<2>& P = b.sim->particles();
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
@@ -419,7 +419,7 @@ std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& p
 // The decision point for what a body is made of: model rigid makes a Bullet body with boundary particles; any other
 // model makes a deformable slide, a phase of its own (named after the body, of its density and rheology) whose
 // particles fill the same outline (fill_fluid_regions). Everything else in the scene stays as it is.
-void build_slides_and_bodies(SceneBuild& b) {
+void build_slides_and_bodies(SceneBuild<2>& b) {
   const YAML::Node list = b.r["bodies"];
   if (list.size() == 0) return;
   b.bodies = make_rigid_world(b);
@@ -486,7 +486,7 @@ void move_shape_up(YAML::Node shape, double rise) {
 // settles stops where that strength holds it, not at its draft (measured, dp 0.005, boxes placed at the shipped
 // floating case's height: 300 kg/m^3 +7.1 %, 700 kg/m^3 -3.4 % off Archimedes), and a user does not know a body's
 // draft in advance. Archimedes on the outline gives it exactly (heave only: the body keeps its orientation).
-void place_floating_bodies(SceneBuild& b) {
+void place_floating_bodies(SceneBuild<2>& b) {
   const double level = stated_still_level(b.r);
   const Vec<2> g = vec2(b.r["gravity"]);
   if (!std::isfinite(level) || !(g[1] < 0.0 && g[0] == 0.0)) return;  // the level is along y, below it is -y
@@ -508,7 +508,7 @@ void place_floating_bodies(SceneBuild& b) {
   }
 }
 
-void finish_bodies(SceneBuild& b) {
+void finish_bodies(SceneBuild<2>& b) {
   for (std::size_t k = 0; k < b.slides.size(); ++k) finish_slide_report(b, b.slides[k], b.scene->slides[k]);
   for (std::size_t k = 0; k < b.scene->bodies.size(); ++k)
     add_lattice_sums(b.scene->bodies[k], b.outlines[k], b.dp, b.still_level, b.phases.phases[0].density);

@@ -36,14 +36,14 @@ struct SlidePoints {
 
 // The deformable slide whose outline holds p; -1 when none does. (Slide and water particles sit on the same lattice,
 // so the outline alone divides them, with no gap.)
-int slide_holding(const SceneBuild& b, const Vec<2>& p) {
+int slide_holding(const SceneBuild<2>& b, const Vec<2>& p) {
   for (std::size_t k = 0; k < b.slides.size(); ++k)
     if (rigid::contains(b.slides[k].outline, rigid::Vec2(p[0], p[1]))) return static_cast<int>(k);
   return -1;
 }
 
 // The body whose outline holds p or lies within dp/2 of it; -1 when p is clear of every body.
-int body_near(const SceneBuild& b, const Vec<2>& p) {
+int body_near(const SceneBuild<2>& b, const Vec<2>& p) {
   for (std::size_t k = 0; k < b.outlines.size(); ++k) {
     const rigid::Vec2 q(p[0], p[1]);
     if (rigid::contains(b.outlines[k], q) || rigid::distance_to_outline(b.outlines[k], q) < 0.5 * b.dp - 1e-9 * b.dp)
@@ -57,7 +57,7 @@ int body_near(const SceneBuild& b, const Vec<2>& p) {
 // splits the lattice and the water fills it up to the wall, and a free side loses or gains half a cell on average.
 // (Whole cells on the hexagonal lattice lost up to a cell layer on two sides: 5.5 % of the gated dam break's water.)
 // A rectangle that spans a periodic domain's period takes the period's points in x (SceneBuild::in_period).
-RegionShape rectangle(const SceneBuild& b, const YAML::Node& rn, const std::string& path) {
+RegionShape rectangle(const SceneBuild<2>& b, const YAML::Node& rn, const std::string& path) {
   const Vec<2> lo = vec2(rn["min"]), hi = vec2(rn["max"]);
   if (!(lo[0] < hi[0] && lo[1] < hi[1])) throw SceneError(path + ".max", "must exceed min in x and y");
   const bool whole_cells = b.sim->options.lattice == LatticeKind::square;
@@ -85,7 +85,7 @@ RegionShape polygon(const YAML::Node& rn) {
 // water_clearance: on the hexagonal lattice a wall along its rows or columns holds every lattice point on or behind
 // the face and the water every one in front of it; elsewhere the water starts half a row or a spacing in front).
 // Raises the still-water level to this one.
-RegionShape below_level(SceneBuild& b, const YAML::Node& rn, const std::string& path) {
+RegionShape below_level(SceneBuild<2>& b, const YAML::Node& rn, const std::string& path) {
   if (b.faces.empty()) throw SceneError(path, "a below_level region needs walls around it");
   const double level = rn["level"].as<double>();
   Vec<2> face_lo, face_hi;
@@ -104,7 +104,7 @@ RegionShape below_level(SceneBuild& b, const YAML::Node& rn, const std::string& 
 // sediment block on a frictionless 20 degree slope accelerated 6.1 % below g sin(beta) on the hexagonal lattice (the
 // wall's rows along the face), and 3.2 % below at 35 degrees on the square lattice, pressed onto its face while it
 // settled (coupling/relaxation.hpp); on rows along the face, -0.9 % and -0.8 % (issue 29, item 3).
-RegionShape slide_shape(const SceneBuild& b, const SceneBuild::Slide& slide) {
+RegionShape slide_shape(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide) {
   Vec<2> lo = from_rigid(slide.outline[0]), hi = lo;
   for (const auto& v : slide.outline) lo = lo.cwiseMin(from_rigid(v)), hi = hi.cwiseMax(from_rigid(v));
   const auto outline = slide.outline;
@@ -121,7 +121,7 @@ RegionShape slide_shape(const SceneBuild& b, const SceneBuild::Slide& slide) {
   return shape;
 }
 
-RegionShape region_shape(SceneBuild& b, const YAML::Node& rn, const std::string& path) {
+RegionShape region_shape(SceneBuild<2>& b, const YAML::Node& rn, const std::string& path) {
   const std::string type = rn["type"].as<std::string>();
   if (type == "rectangle") return rectangle(b, rn, path);
   if (type == "polygon") return polygon(rn);
@@ -132,7 +132,7 @@ RegionShape region_shape(SceneBuild& b, const YAML::Node& rn, const std::string&
 // SceneBuild::in_period); a lattice point on or near a body is an error. Water leaves out a point closer than a
 // spacing to a slide's particle: none on the slide's own lattice (its nearest neighbours are a spacing or more
 // apart), some beside a slide laid on a face's rows (slide_shape).
-void fill_region(SceneBuild& b, const RegionShape& shape, std::size_t ph, const std::string& path, bool slide_itself,
+void fill_region(SceneBuild<2>& b, const RegionShape& shape, std::size_t ph, const std::string& path, bool slide_itself,
                  const SlidePoints& slides) {
   Particles<2>& P = b.particles();
   const auto& phase = b.phases.phases[ph];
@@ -162,7 +162,7 @@ void fill_region(SceneBuild& b, const RegionShape& shape, std::size_t ph, const 
 
 }  // namespace
 
-void fill_fluid_regions(SceneBuild& b) {
+void fill_fluid_regions(SceneBuild<2>& b) {
   if (b.r["fluid"]["regions"].size() == 0 && b.slides.empty())
     throw SceneError("fluid.regions", "expected at least 1 item (a scene without water needs a deformable slide)");
   b.boundary_count = b.particles().size();
@@ -190,26 +190,29 @@ void fill_fluid_regions(SceneBuild& b) {
 }
 
 // Fluid particles closer than 0.75 dp to a boundary particle or to a particle of an earlier region.
-void check_overlaps(SceneBuild& b) {
-  const Particles<2>& P = b.particles();
+template <int D>
+void check_overlaps(SceneBuild<D>& b) {
+  const Particles<D>& P = b.particles();
   const double dp = b.dp;
   const std::size_t n_boundary = b.boundary_count;
-  NeighborGrid<2> g(b.lo - Vec<2>::Constant(dp), b.hi + Vec<2>::Constant(dp), dp);
+  NeighborGrid<D> g(b.lo - Vec<D>::Constant(dp), b.hi + Vec<D>::Constant(dp), dp);
   g.bin(P.position);
   for (std::size_t i = n_boundary; i < P.size(); ++i) {
     const std::string& path = b.fluid_owner[i - n_boundary];
     g.for_each_near(P.position[i], 0.75 * dp, P.position, [&](std::uint32_t j, double r2) {
       if (j == i) return;
       if (j < n_boundary)
-        throw SceneError(path, fmt::format("water overlaps {}: a particle at ({:.6g}, {:.6g}) is {:.3g} dp "
+        throw SceneError(path, fmt::format("water overlaps {}: a particle at {} is {:.3g} dp "
                                            "from one of its boundary particles (at least 0.75 dp needed)",
-                                           b.boundary_owner[j], P.position[i][0], P.position[i][1],
-                                           std::sqrt(r2) / dp));
+                                           b.boundary_owner[j], point_text<D>(P.position[i]), std::sqrt(r2) / dp));
       if (j < i)
-        throw SceneError(path, fmt::format("overlaps {} at ({:.6g}, {:.6g})", b.fluid_owner[j - n_boundary],
-                                           P.position[i][0], P.position[i][1]));
+        throw SceneError(path, fmt::format("overlaps {} at {}", b.fluid_owner[j - n_boundary],
+                                           point_text<D>(P.position[i])));
     });
   }
 }
+
+template void check_overlaps(SceneBuild<2>&);
+template void check_overlaps(SceneBuild<3>&);
 
 }  // namespace slide::cases

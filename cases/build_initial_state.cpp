@@ -17,10 +17,12 @@
 namespace slide::cases {
 namespace {
 
-double downward_gravity(const SceneBuild& b) { return -b.sim->options.gravity[1]; }
+// Gravity along -(last axis): y in 2-D, z in 3-D.
+template <int D>
+double downward_gravity(const SceneBuild<D>& b) { return -b.sim->options.gravity[D - 1]; }
 
 // Floating bodies go down with the water they rest on (free bodies only: a prescribed one keeps its law).
-void lower_free_bodies(SceneBuild& b, const std::vector<double>& body_shift) {
+void lower_free_bodies(SceneBuild<2>& b, const std::vector<double>& body_shift) {
   Particles<2>& P = b.particles();
   for (std::size_t k = 0; k < body_shift.size(); ++k) {
     if (body_shift[k] == 0.0 || b.bodies->motion[k].mode != BodyMotion::Mode::free) continue;
@@ -32,14 +34,16 @@ void lower_free_bodies(SceneBuild& b, const std::vector<double>& body_shift) {
 
 }  // namespace
 
-void choose_sound_speed(SceneBuild& b) {
-  FluidOptions<2>& opt = b.options();
-  Scene& scene = *b.scene;
+template <int D>
+void choose_sound_speed(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  FluidOptions<D>& opt = b.options();
+  Scene<D>& scene = *b.scene;
   const double g = downward_gravity(b);
   // A lattice column's particles are dp apart on the square lattice, two rows apart on the hexagonal one.
   scene.deepest_water =
-      deepest_water<2>(b.particles(), b.dp, b.hexagonal ? 2.0 * row_spacing(opt.lattice, b.dp) : b.dp);
-  const double c0_key = b.r["method"]["sound_speed"].as<double>();
+      deepest_water<D>(b.particles(), b.dp, b.close_packed ? 2.0 * row_spacing(opt.lattice, b.dp) : b.dp);
+  const double c0_key = r["method"]["sound_speed"].as<double>();
   if (c0_key > 0.0) {
     opt.sound_speed = c0_key;
     scene.sound_speed_source = "method.sound_speed";
@@ -47,34 +51,38 @@ void choose_sound_speed(SceneBuild& b) {
   }
   if (g <= 0.0 || scene.deepest_water <= 0.0)
     throw SceneError("method.sound_speed", "cannot default to a multiple of sqrt(g H) without downward gravity; set it");
-  const double factor = b.r["method"]["sound_speed_factor"].as<double>();
+  const double factor = r["method"]["sound_speed_factor"].as<double>();
   opt.sound_speed = factor * std::sqrt(g * scene.deepest_water);
   scene.sound_speed_source = fmt::format("{:g} sqrt(g H) (method.sound_speed_factor), H = {:.6g} m (deepest water), "
                                          "g = {:.6g} m/s^2",
                                          factor, scene.deepest_water, g);
 }
 
-void start_hydrostatic(SceneBuild& b) {
+// 3-D: the equation of state's gaps (the equilibrium column is a 2-D periodic slab so far).
+template <int D>
+void start_hydrostatic(SceneBuild<D>& b) {
   const double g = downward_gravity(b);
   if (b.initial_state == InitialState::settled && !(g > 0.0))
     throw SceneError("method.initial_state", "a settled start needs downward gravity");
   // The hexagonal lattice is compressed by settling alone (its columns are not the square lattice's runs).
-  if (b.initial_state == InitialState::lattice || !(g > 0.0) || b.hexagonal) return;
-  const FluidOptions<2>& opt = b.sim->options;
+  if (b.initial_state == InitialState::lattice || !(g > 0.0) || b.close_packed) return;
+  const FluidOptions<D>& opt = b.sim->options;
   const double dp = b.dp, re = opt.re_over_dp * dp;
-  const LatticeConstants lc = lattice_constants<2>(dp, re);
+  const LatticeConstants lc = lattice_constants<D>(dp, re);
   const int rows = static_cast<int>(std::lround(b.scene->deepest_water / dp));
   const auto& water = b.phases.phases[0];
+  const double still_level = std::isfinite(b.still_level) ? b.still_level : std::numeric_limits<double>::quiet_NaN();
+  const EquationOfState eos(lc.n0, opt.sound_speed, opt.gamma);
   try {
-    const EquilibriumColumn column = equilibrium_column(opt, water.density, water.viscosity, rows);
-    b.scene->equilibrium = column;
-    std::vector<double> body_shift;
-    compress_hydrostatically<2>(b.particles(), dp, re, EquationOfState(lc.n0, opt.sound_speed, opt.gamma), g, true,
-                                column.gap_from_top,
-                                std::isfinite(b.still_level) ? b.still_level
-                                                             : std::numeric_limits<double>::quiet_NaN(),
-                                &body_shift);
-    lower_free_bodies(b, body_shift);
+    if constexpr (D == 2) {
+      const EquilibriumColumn column = equilibrium_column(opt, water.density, water.viscosity, rows);
+      b.scene->equilibrium = column;
+      std::vector<double> body_shift;
+      compress_hydrostatically<2>(b.particles(), dp, re, eos, g, true, column.gap_from_top, still_level, &body_shift);
+      lower_free_bodies(b, body_shift);
+    } else {
+      compress_hydrostatically<D>(b.particles(), dp, re, eos, g, true, {}, still_level);
+    }
   } catch (const std::runtime_error& e) {
     throw SceneError("method.initial_state", std::string("hydrostatic start failed: ") + e.what());
   }
@@ -83,31 +91,35 @@ void start_hydrostatic(SceneBuild& b) {
 // The scene's domain, or the particles' bounding box as placed enlarged by 4 re on every side and by half its
 // height upwards. A fluid particle that leaves it through an open side is taken out of the run; the walls' faces,
 // as thick as their particle layers, tell one that went through a wall (fluid/wall_crossing.hpp).
-void set_domain(SceneBuild& b) {
-  FluidOptions<2>& opt = b.options();
-  const Particles<2>& P = b.particles();
+template <int D>
+void set_domain(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  FluidOptions<D>& opt = b.options();
+  const Particles<D>& P = b.particles();
   const double re = opt.re_over_dp * b.dp;
-  if (!b.r["domain"]) {
-    opt.domain_lo = b.lo - Vec<2>::Constant(4 * re);
-    opt.domain_hi = b.hi + Vec<2>::Constant(4 * re) + Vec<2>(0.0, 0.5 * (b.hi[1] - b.lo[1]));
+  if (!r["domain"]) {
+    opt.domain_lo = b.lo - Vec<D>::Constant(4 * re);
+    opt.domain_hi = b.hi + Vec<D>::Constant(4 * re) + Vec<D>::Unit(D - 1) * (0.5 * (b.hi[D - 1] - b.lo[D - 1]));
   } else {
-    opt.domain_lo = vec2(b.r["domain"]["min"]);
-    opt.domain_hi = vec2(b.r["domain"]["max"]);
+    opt.domain_lo = vec_of<D>(r["domain"]["min"]);
+    opt.domain_hi = vec_of<D>(r["domain"]["max"]);
     for (std::size_t i = 0; i < P.size(); ++i)
-      for (int k = 0; k < 2; ++k)
+      for (int k = 0; k < D; ++k)
         if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
-          throw SceneError("domain", fmt::format("particle at ({:.6g}, {:.6g}) lies outside the domain",
-                                                 P.position[i][0], P.position[i][1]));
+          throw SceneError("domain", fmt::format("particle at {} lies outside the domain", point_text<D>(P.position[i])));
     opt.periodic_x = b.period_x;
   }
-  std::vector<WallFace> faces;
-  for (const auto& f : b.faces) faces.push_back({f.a, f.b, f.inward});
-  b.sim->wall_crossing =
-      WallCrossing(std::move(faces), boundary_layers(opt.re_over_dp) * b.dp, opt.domain_lo, opt.domain_hi, re);
+  if constexpr (D == 2) {
+    std::vector<WallFace> faces;
+    for (const auto& f : b.faces) faces.push_back({f.a, f.b, f.inward});
+    b.sim->wall_crossing =
+        WallCrossing(std::move(faces), boundary_layers(opt.re_over_dp) * b.dp, opt.domain_lo, opt.domain_hi, re);
+  }
 }
 
 // The kinds of a scene's particles counted (again after gates are lifted).
-void count_particles(Scene& scene) {
+template <int D>
+void count_particles(Scene<D>& scene) {
   scene.wall_count = scene.dummy_count = scene.fluid_count = 0;
   for (const Kind k : scene.simulation->particles().kind) {
     if (k == Kind::fluid) ++scene.fluid_count;
@@ -116,7 +128,8 @@ void count_particles(Scene& scene) {
   }
 }
 
-void count_particles(SceneBuild& b) {
+template <int D>
+void count_particles(SceneBuild<D>& b) {
   for (const Kind k : b.particles().kind) {
     if (k == Kind::fluid) ++b.scene->fluid_count;
     else if (k == Kind::wall) ++b.scene->wall_count;
@@ -132,7 +145,8 @@ void count_particles(SceneBuild& b) {
 // settles as a fluid by design (coupling/relaxation.hpp) and may slump where it lies on a slope (measured: 10 dp
 // for the Mohr-Coulomb layer on its slope in tests/test_sediment_block.cpp).
 namespace {
-void refuse_flowing_water(const Scene& scene) {
+template <int D>
+void refuse_flowing_water(const Scene<D>& scene) {
   const Relaxation& s = *scene.settling;
   const double dp = scene.particle_spacing;
   const auto& phases = scene.simulation->phases;
@@ -150,10 +164,11 @@ void refuse_flowing_water(const Scene& scene) {
 }
 
 // After settling (or without it), the gates go.
-void lift_gates(Scene& scene) {
+template <int D>
+void lift_gates(Scene<D>& scene) {
   if (scene.pending_gate_ids.empty()) return;
-  Simulation<2>& sim = *scene.simulation;
-  Particles<2>& P = sim.particles();
+  Simulation<D>& sim = *scene.simulation;
+  Particles<D>& P = sim.particles();
   std::vector<char> is_gate(P.id_end(), 0);
   for (const std::uint32_t id : scene.pending_gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
   P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });
@@ -166,22 +181,27 @@ void lift_gates(Scene& scene) {
 
 // What the settled start settles: its duration and damping, and the deformable slides held while the water settles
 // around them, like rigid ones, free along the normal of the face they rest on (coupling/relaxation.hpp).
-void plan_settling(SceneBuild& b) {
+template <int D>
+void plan_settling(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
   b.scene->particle_spacing = b.dp;
   b.scene->pending_gate_ids = b.gate_ids;
   if (b.initial_state != InitialState::settled) return;
-  const YAML::Node m = b.r["method"];
-  const Vec<2>& g = b.sim->options.gravity;
-  const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
-  SettlingPlan plan{m["settling_time"].as<double>(), m["settling_damping"].as<double>(), {}};
-  for (const auto& s : b.slides) {
-    const auto face = resting_face(b.faces, s.outline, b.dp, down);
-    plan.held.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<2>(-face->inward) : down});
+  const YAML::Node m = r["method"];
+  SettlingPlan<D> plan{m["settling_time"].as<double>(), m["settling_damping"].as<double>(), {}};
+  if constexpr (D == 2) {
+    const Vec<2>& g = b.sim->options.gravity;
+    const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
+    for (const auto& s : b.slides) {
+      const auto face = resting_face(b.faces, s.outline, b.dp, down);
+      plan.held.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<2>(-face->inward) : down});
+    }
   }
   b.scene->pending_settling = plan;
 }
 
-void complete_start(Scene& scene, const std::optional<Relaxation>& settled) {
+template <int D>
+void complete_start(Scene<D>& scene, const std::optional<Relaxation>& settled) {
   scene.pending_settling.reset();
   if (settled) {
     scene.settling = *settled;
@@ -190,7 +210,8 @@ void complete_start(Scene& scene, const std::optional<Relaxation>& settled) {
   lift_gates(scene);
 }
 
-void settle_now(Scene& scene) {
+template <int D>
+void settle_now(Scene<D>& scene) {
   std::optional<Relaxation> settled;
   if (scene.pending_settling) {
     try {
@@ -201,5 +222,17 @@ void settle_now(Scene& scene) {
   }
   complete_start(scene, settled);
 }
+
+#define SLIDE_INITIAL_STATE_STEPS(D)                                               \
+  template void choose_sound_speed(SceneBuild<D>&);                               \
+  template void start_hydrostatic(SceneBuild<D>&);                                \
+  template void set_domain(SceneBuild<D>&);                                       \
+  template void count_particles(SceneBuild<D>&);                                  \
+  template void plan_settling(SceneBuild<D>&);                                    \
+  template void complete_start(Scene<D>&, const std::optional<Relaxation>&);      \
+  template void settle_now(Scene<D>&);
+SLIDE_INITIAL_STATE_STEPS(2)
+SLIDE_INITIAL_STATE_STEPS(3)
+#undef SLIDE_INITIAL_STATE_STEPS
 
 }  // namespace slide::cases

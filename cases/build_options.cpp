@@ -39,47 +39,63 @@ void read_time_step(const YAML::Node& t, TimeStepOptions& o) {
 }
 
 // checks.* (the domain is set once the particles are placed: set_domain).
-void read_checks(const YAML::Node& c, CheckOptions<2>& o) {
+template <int D>
+void read_checks(const YAML::Node& c, CheckOptions<D>& o) {
   o.max_number_density_ratio = c["max_number_density_ratio"].as<double>();
   o.max_speed_over_c0 = c["max_speed_over_c0"].as<double>();
 }
 
 }  // namespace
 
-void read_fluid_options(SceneBuild& b) {
-  FluidOptions<2>& opt = b.options();
-  read_method(b.r, opt);
-  read_time_step(b.r["time_step"], opt);
-  read_checks(b.r["checks"], opt);
-  opt.gravity = vec2(b.r["gravity"]);
+template <int D>
+void read_fluid_options(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  FluidOptions<D>& opt = b.options();
+  read_method(r, opt);
+  read_time_step(r["time_step"], opt);
+  read_checks(r["checks"], opt);
+  opt.gravity = vec_of<D>(r["gravity"]);
   b.dp = opt.dp;
-  b.hexagonal = opt.lattice == LatticeKind::hexagonal;
-  b.initial_state = initial_state_names.parse(b.r["method"]["initial_state"].as<std::string>());
+  b.close_packed = opt.lattice != LatticeKind::square;
+  b.initial_state = initial_state_names.parse(r["method"]["initial_state"].as<std::string>());
 }
 
-void check_lattice_choices(SceneBuild& b) {
-  if (!b.hexagonal) return;
+template <int D>
+void check_lattice_choices(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  if (!b.close_packed) return;
+  const std::string_view lattice = to_string(b.options().lattice);
   if (b.options().wall_pressure == WallPressure::mirror)
-    throw SceneError("method.wall_pressure", "the mirror model needs lattice: square (its images assume the square "
-                                             "lattice); use extrapolated with lattice: hexagonal");
+    throw SceneError("method.wall_pressure", fmt::format("the mirror model needs lattice: square (its images assume "
+                                                         "the square lattice); use extrapolated with lattice: {}",
+                                                         lattice));
   if (b.initial_state == InitialState::hydrostatic)
-    throw SceneError("method.initial_state", "lattice: hexagonal starts from lattice or settled (settling "
-                                             "compresses it); the column-wise hydrostatic start needs lattice: square");
-  for (std::size_t w = 0; w < b.r["walls"].size(); ++w)
-    if (b.r["walls"][w]["layers"].as<long>() != 0)
+    throw SceneError("method.initial_state", fmt::format("lattice: {} starts from lattice or settled (settling "
+                                                         "compresses it); the column-wise hydrostatic start needs "
+                                                         "lattice: square",
+                                                         lattice));
+  for (std::size_t w = 0; w < r["walls"].size(); ++w)
+    if (r["walls"][w]["layers"].as<long>() != 0)
       throw SceneError(fmt::format("walls[{}].layers", w),
-                       "with lattice: hexagonal walls are cut from the lattice to the depth re; leave layers at 0");
+                       fmt::format("with lattice: {} walls are cut from the lattice to the depth re; leave layers at 0",
+                                   lattice));
 }
 
 // A periodic domain's period must hold a whole number of the lattice's columns (dp apart on the square lattice,
 // 1.0746 dp on the hexagonal one): otherwise the lattice does not join across the seam, and the particles either side
 // of it stand too close or too far apart (a 0.2 m period at dp 0.01 on the hexagonal lattice holds 18.6 columns: a
 // seam 1.6 columns wide in every row). Within 1e-3 of a column: the seam's spacing is then a's to 0.1 %.
-void check_period(SceneBuild& b) {
-  const YAML::Node d = b.r["domain"];
+template <int D>
+void check_period(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  const YAML::Node d = r["domain"];
   if (!d || !d["periodic_x"].as<bool>()) return;
   const double x_min = d["min"][0].as<double>(), x_max = d["max"][0].as<double>();
-  const double column = nearest_spacing(b.options().lattice, b.dp), columns = (x_max - x_min) / column;
+  // The lattice repeats along x every column: dp, a (hexagonal), or two planes (fcc: its points alternate between
+  // planes).
+  const LatticeKind kind = b.options().lattice;
+  const double column = kind == LatticeKind::fcc ? 2.0 * row_spacing(kind, b.dp) : nearest_spacing(kind, b.dp);
+  const double columns = (x_max - x_min) / column;
   const double whole = std::round(columns);
   if (whole < 1.0 || std::abs(columns - whole) > 1e-3)
     throw SceneError("domain.max",
@@ -91,10 +107,12 @@ void check_period(SceneBuild& b) {
   b.period_x = PeriodicX{x_min, x_max};
 }
 
-bool SceneBuild::in_period(double x) const {
-  if (!period_x) return true;
-  const double quarter = 0.25 * nearest_spacing(sim->options.lattice, dp);
-  return x >= period_x->x_min - quarter && x < period_x->x_max - quarter;
-}
+
+template void read_fluid_options(SceneBuild<2>&);
+template void read_fluid_options(SceneBuild<3>&);
+template void check_lattice_choices(SceneBuild<2>&);
+template void check_lattice_choices(SceneBuild<3>&);
+template void check_period(SceneBuild<2>&);
+template void check_period(SceneBuild<3>&);
 
 }  // namespace slide::cases

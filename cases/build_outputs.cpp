@@ -15,7 +15,8 @@ namespace {
 std::vector<GaugeSpec> read_gauges(const YAML::Node& list) {
   std::vector<GaugeSpec> out;
   for (std::size_t k = 0; k < list.size(); ++k)
-    out.push_back({list[k]["name"].as<std::string>(), list[k]["x"].as<double>()});
+    out.push_back({list[k]["name"].as<std::string>(), list[k]["x"].as<double>(),
+                   list[k]["y"] ? list[k]["y"].as<double>() : 0.0});
   return out;
 }
 
@@ -45,11 +46,11 @@ ProfileSpec read_profiles(const YAML::Node& pn, double dp) {
 }
 
 // diagnostics.slide_shapes: the measured surfaces grouped by their time (rows in any order), in increasing time.
-std::optional<SlideShapesSpec> read_slide_shapes(const SceneBuild& b, const YAML::Node& sn) {
+std::optional<SlideShapesSpec> read_slide_shapes(const std::filesystem::path& scene_dir, const YAML::Node& sn) {
   const std::string file = sn["file"].as<std::string>();
   if (file.empty()) return std::nullopt;
   const std::string key = "diagnostics.slide_shapes.file";
-  const std::filesystem::path path = b.scene_dir / file;
+  const std::filesystem::path path = scene_dir / file;
   CsvTable t;
   try {
     t = read_csv(path);
@@ -86,17 +87,27 @@ OutputSpec read_output(const YAML::Node& on) {
 
 }  // namespace
 
-void read_outputs(SceneBuild& b) {
-  Scene& scene = *b.scene;
-  scene.gauges = read_gauges(b.r["gauges"]);
-  scene.surge_front = read_surge_front(b.r["diagnostics"]["surge_front"]);
-  scene.velocity_profile = read_velocity_profile(b.r["diagnostics"]["velocity_profile"], b.options().lattice, b.dp);
-  scene.profiles = read_profiles(b.r["profiles"], b.dp);
-  scene.output = read_output(b.r["output"]);
-  scene.slide_shapes = read_slide_shapes(b, b.r["diagnostics"]["slide_shapes"]);
-  for (const auto& t : b.r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());
+// The keys a 3-D scene does not have (profiles, diagnostics: cases/load_scene.cpp) are absent from its resolved scene,
+// and their specs stay off.
+template <int D>
+void read_outputs(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  Scene<D>& scene = *b.scene;
+  const YAML::Node diagnostics = r["diagnostics"];
+  scene.gauges = read_gauges(r["gauges"]);
+  if (diagnostics) {
+    scene.surge_front = read_surge_front(diagnostics["surge_front"]);
+    scene.velocity_profile = read_velocity_profile(diagnostics["velocity_profile"], b.options().lattice, b.dp);
+  }
+  scene.profiles = read_profiles(r["profiles"], b.dp);
+  scene.output = read_output(r["output"]);
+  if (diagnostics) scene.slide_shapes = read_slide_shapes(b.scene_dir, diagnostics["slide_shapes"]);
+  for (const auto& t : r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());
   if (!std::is_sorted(scene.slide_outline_times.begin(), scene.slide_outline_times.end()))
     throw SceneError("output.slide_outline_times", "must be in increasing order");
 }
+
+template void read_outputs(SceneBuild<2>&);
+template void read_outputs(SceneBuild<3>&);
 
 }  // namespace slide::cases

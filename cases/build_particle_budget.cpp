@@ -27,10 +27,24 @@ double polyline_length(const std::vector<Vec<2>>& p) {
   return length;
 }
 
+std::string size_text(double bytes) {
+  return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9) : fmt::format("{:.3g} MB", bytes / 1e6);
+}
+
+std::optional<MemoryLimit> read_memory_limit() {
+  try {
+    return memory_limit();
+  } catch (const std::invalid_argument& e) {
+    throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
+  }
+}
+
+}  // namespace
+
 // Both lattices hold one point per dp^2 (the hexagonal one's columns 1.0746 dp apart, rows 0.9306 dp). Regions and
 // slides: their area; below_level water: the walls' width times its depth below the level (an upper bound); walls:
 // their length times their layers; rigid bodies: the larger of their area and their perimeter times the layers.
-double estimated_particles(const SceneBuild& b) {
+double estimated_particles(const SceneBuild<2>& b) {
   const double dp = b.dp, cell = dp * dp;
   const int auto_layers = boundary_layers(b.sim->options.re_over_dp);
   double n = 0.0;
@@ -62,24 +76,11 @@ double estimated_particles(const SceneBuild& b) {
   return n;
 }
 
-std::string size_text(double bytes) {
-  return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9) : fmt::format("{:.3g} MB", bytes / 1e6);
-}
-
-std::optional<MemoryLimit> read_memory_limit() {
-  try {
-    return memory_limit();
-  } catch (const std::invalid_argument& e) {
-    throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
-  }
-}
-
-}  // namespace
-
 // Before any particle is made: refused where slide cannot index the particles, or where their own arrays alone would
 // not fit (so that a scene far too large for the machine is refused without allocating until it swaps). The run's
 // estimate, which needs the particles' neighbour counts, follows once they are made (check_run_memory).
-void check_particle_budget(SceneBuild& b) {
+template <int D>
+void check_particle_budget(SceneBuild<D>& b) {
   const double n = estimated_particles(b);
   if (n > 4294967295.0)
     throw SceneError("particle_spacing", fmt::format("the scene would make about {:.3g} particles at dp = {} m, more "
@@ -97,8 +98,10 @@ void check_particle_budget(SceneBuild& b) {
 // Once the particles are made and their neighbours listed: the run's peak memory (cases/particle_budget.hpp), what
 // slide check prints and run.json records, refused where it exceeds what this machine or job has, before the run
 // allocates the rest.
-void check_run_memory(SceneBuild& b) {
-  const Simulation<2>& sim = *b.sim;
+template <int D>
+void check_run_memory(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
+  const Simulation<D>& sim = *b.sim;
   const double n = double(sim.particles().size());
   RunMemoryInputs in;
   in.particles = n;
@@ -106,7 +109,7 @@ void check_run_memory(SceneBuild& b) {
   in.snapshots = b.scene->output.snapshots;
   in.bodies_or_slides = !b.scene->bodies.empty() || !b.scene->slides.empty();
   for (const auto& phase : sim.phases) in.non_newtonian = in.non_newtonian || !std::holds_alternative<Newtonian>(phase.rheology);
-  const double settling = b.initial_state == InitialState::settled ? b.r["method"]["settling_time"].as<double>() : 0.0;
+  const double settling = b.initial_state == InitialState::settled ? r["method"]["settling_time"].as<double>() : 0.0;
   const double dt = sim.allowed_time_step().first;
   in.body_steps = dt > 0.0 ? double(b.scene->bodies.size()) * (settling + b.scene->end_time) / dt : 0.0;
   b.scene->memory_estimate_bytes = program_resident_bytes() + run_memory_bytes(in);
@@ -118,5 +121,10 @@ void check_run_memory(SceneBuild& b) {
                                  sim.particles().real_count(), b.dp, size_text(b.scene->memory_estimate_bytes),
                                  size_text(limit->total_bytes()), limit->source));
 }
+
+template void check_particle_budget(SceneBuild<2>&);
+template void check_particle_budget(SceneBuild<3>&);
+template void check_run_memory(SceneBuild<2>&);
+template void check_run_memory(SceneBuild<3>&);
 
 }  // namespace slide::cases

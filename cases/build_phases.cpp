@@ -38,21 +38,26 @@ ScenePhases read_phases(const YAML::Node& list) {
 }
 
 // The phases as the simulation keeps them, and the viscous scheme (auto: implicit when some phase is non-Newtonian).
-void set_phases(SceneBuild& b) {
+template <int D>
+void set_phases(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
   bool non_newtonian = false;
   for (const auto& p : b.phases.phases) {
     b.sim->phases.push_back(Phase{p.name, p.density, p.rheology, p.basal_friction});
     non_newtonian = non_newtonian || !std::holds_alternative<Newtonian>(p.rheology);
   }
   auto& o = b.options();
-  switch (viscous_scheme_choice_names.parse(b.r["method"]["viscous_scheme"].as<std::string>())) {
+  switch (viscous_scheme_choice_names.parse(r["method"]["viscous_scheme"].as<std::string>())) {
     case ViscousSchemeChoice::automatic:
       o.viscous_scheme = non_newtonian ? ViscousScheme::implicit : ViscousScheme::explicit_;
       break;
     case ViscousSchemeChoice::explicit_: o.viscous_scheme = ViscousScheme::explicit_; break;
     case ViscousSchemeChoice::implicit: o.viscous_scheme = ViscousScheme::implicit; break;
   }
-  o.implicit_tolerance = b.r["method"]["implicit_tolerance"].as<double>();
+  o.implicit_tolerance = r["method"]["implicit_tolerance"].as<double>();
 }
+
+template void set_phases(SceneBuild<2>&);
+template void set_phases(SceneBuild<3>&);
 
 }  // namespace slide::cases

@@ -20,9 +20,9 @@ namespace {
 // lattice's rows are 0.93 dp apart and fixed, so water under a body would otherwise start up to a row spacing
 // further off than dp/2; the water cannot close such a gap under a held body (at rest, particles on a lattice
 // resist shear like a solid), and on release a block of water density sank 6.5 mm onto it (issue 4's note).
-Vec<2> lattice_offset_for_bodies(const SceneBuild& b) {
+Vec<2> lattice_offset_for_bodies(const SceneBuild<2>& b) {
   Vec<2> offset = Vec<2>::Zero();
-  if (!b.hexagonal || b.r["bodies"].size() == 0) return offset;
+  if (!b.close_packed || b.r["bodies"].size() == 0) return offset;
   double lowest = std::numeric_limits<double>::infinity();
   for (const auto& v : body_outline(b.r["bodies"][0], "bodies[0]")) lowest = std::min(lowest, v[1]);
   offset[1] = row_offset_to_meet(b.sim->options.lattice, b.dp, lowest - 0.5 * b.dp);
@@ -30,14 +30,14 @@ Vec<2> lattice_offset_for_bodies(const SceneBuild& b) {
 }
 
 // The boundary points of one wall's face.
-std::vector<BoundaryPoint> wall_points(const SceneBuild& b, const YAML::Node& wn, std::size_t w,
+std::vector<BoundaryPoint> wall_points(const SceneBuild<2>& b, const YAML::Node& wn, std::size_t w,
                                        const std::vector<Vec<2>>& face, bool left) {
   const FluidOptions<2>& opt = b.sim->options;
   const long layers_key = wn["layers"].as<long>();
   const int layers = layers_key == 0 ? boundary_layers(opt.re_over_dp) : static_cast<int>(layers_key);
   std::vector<BoundaryPoint> pts;
   try {
-    pts = b.hexagonal ? lattice_boundary(face, left, b.dp, opt.re_over_dp * b.dp, opt.lattice, b.scene->lattice_offset)
+    pts = b.close_packed ? lattice_boundary(face, left, b.dp, opt.re_over_dp * b.dp, opt.lattice, b.scene->lattice_offset)
                       : polyline_boundary(face, left, b.dp, layers);
   } catch (const std::invalid_argument& e) {
     throw SceneError(fmt::format("walls[{}].points", w), e.what());
@@ -53,7 +53,7 @@ std::vector<BoundaryPoint> wall_points(const SceneBuild& b, const YAML::Node& wn
 
 // Boundary particles of the first phase's density; they carry no viscosity of their own. A point within dp/2 of a
 // particle already placed is left out (overlapping layers at convex corners or where walls meet).
-void add_wall_particles(SceneBuild& b, const std::vector<BoundaryPoint>& pts, std::size_t w) {
+void add_wall_particles(SceneBuild<2>& b, const std::vector<BoundaryPoint>& pts, std::size_t w) {
   Particles<2>& P = b.particles();
   const double dp = b.dp;
   const auto& first_phase = b.phases.phases[0];
@@ -72,7 +72,7 @@ void add_wall_particles(SceneBuild& b, const std::vector<BoundaryPoint>& pts, st
 
 // A gate is checked before anything runs: it needs the settled start, and a domain that is not periodic (the
 // gate's particles are taken away from the real particles, which periodic ghosts copy).
-void check_gate(const SceneBuild& b, std::size_t w) {
+void check_gate(const SceneBuild<2>& b, std::size_t w) {
   const std::string key = fmt::format("walls[{}].gate", w);
   if (b.initial_state != InitialState::settled)
     throw SceneError(key, "a gate needs method.initial_state: settled (it holds the water while it settles, and is "
@@ -88,7 +88,7 @@ void check_gate(const SceneBuild& b, std::size_t w) {
 // is not one of the scene's faces: bodies do not collide with it, and regions are not laid by it (water on either
 // side of a gate is a rectangle or polygon region; a below_level region fills the tank as if there were no gate, and
 // the overlap check then refuses water on the gate's particles).
-void build_walls(SceneBuild& b) {
+void build_walls(SceneBuild<2>& b) {
   b.scene->lattice_offset = lattice_offset_for_bodies(b);
   for (const bool gates : {false, true})
     for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {

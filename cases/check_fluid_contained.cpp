@@ -14,7 +14,7 @@ namespace slide::cases {
 namespace {
 
 // Whether the ray from p along gravity meets a wall face or a body's outline.
-bool held(const SceneBuild& b, const Vec<2>& p, const Vec<2>& down) {
+bool held(const SceneBuild<2>& b, const Vec<2>& p, const Vec<2>& down) {
   for (const auto& f : b.faces)
     if (ray_meets_segment(p, down, f.a, f.b)) return true;
   for (const auto& outline : b.outlines)
@@ -26,7 +26,7 @@ bool held(const SceneBuild& b, const Vec<2>& p, const Vec<2>& down) {
 
 }  // namespace
 
-void check_fluid_contained(SceneBuild& b) {
+void check_fluid_contained(SceneBuild<2>& b) {
   // Along a periodic x the water cannot leave sideways: only gravity across it can take it out.
   const Vec<2> g = b.period_x ? Vec<2>(0.0, b.options().gravity[1]) : b.options().gravity;
   if (g.norm() == 0.0 || b.r["checks"]["allow_uncontained_fluid"].as<bool>()) return;

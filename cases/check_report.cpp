@@ -22,7 +22,16 @@ std::string memory_available() {
   return "";
 }
 
-std::string summary(const Scene& scene) {
+// "[a, b] x [c, d]" (x [e, f] in 3-D): the domain's extent.
+template <int D>
+std::string extent_text(const Vec<D>& lo, const Vec<D>& hi) {
+  std::string out;
+  for (int k = 0; k < D; ++k) out += fmt::format("{}[{:.6g}, {:.6g}]", k ? " x " : "", lo[k], hi[k]);
+  return out;
+}
+
+template <int D>
+std::string summary(const Scene<D>& scene) {
   const auto& sim = *scene.simulation;
   const auto [dt, limit] = sim.allowed_time_step();
   const auto& o = sim.options;
@@ -36,20 +45,21 @@ std::string summary(const Scene& scene) {
       "gradient model  {}\n"
       "initial dt      {:.6g} s, limited by {}\n"
       "end time        {} s (about {:.0f} steps at the initial dt)\n"
-      "domain          [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m\n"
+      "domain          {} m\n"
       "memory          about {:.1f} MB at its peak{}\n",
       scene.name, sim.particles().real_count(), scene.fluid_count, scene.wall_count, scene.dummy_count, o.dp,
       o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
-      scene.lattice_offset[1] != 0.0
-          ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene.lattice_offset[1])
+      scene.lattice_offset[D - 1] != 0.0
+          ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene.lattice_offset[D - 1])
           : std::string(),
       sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene.sound_speed_source, to_string(o.gradient), dt, to_string(limit), scene.end_time, scene.end_time / dt,
-      o.domain_lo[0], o.domain_hi[0], o.domain_lo[1], o.domain_hi[1], scene.memory_estimate_bytes / 1e6,
+      extent_text<D>(o.domain_lo, o.domain_hi), scene.memory_estimate_bytes / 1e6,
       memory_available());
 }
 
-std::string start(const Scene& scene) {
+template <int D>
+std::string start(const Scene<D>& scene) {
   std::string out;
   if (const auto& e = scene.equilibrium)
     out += fmt::format("hydrostatic start: equilibrium column relaxed for {:.4g} s ({} steps), residual row speed "
@@ -78,7 +88,7 @@ std::vector<Vec<2>> outline_now(const BodyReport& b, const rigid::PlanarState& s
   return out;
 }
 
-std::string bodies(const Scene& scene) {
+std::string bodies(const Scene<2>& scene) {
   std::string out;
   const double dp = scene.simulation->options.dp;
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
@@ -122,7 +132,8 @@ static std::string basal_condition(double mu_b) {
 
 // The phases with their rheology and the viscous scheme; each deformable slide with its particles, mass and yield
 // criterion at rest.
-std::string phases_and_slides(const Scene& scene) {
+template <int D>
+std::string phases_and_slides(const Scene<D>& scene) {
   const auto& sim = *scene.simulation;
   std::string out;
   for (const auto& p : sim.phases)
@@ -140,8 +151,14 @@ std::string phases_and_slides(const Scene& scene) {
   return out;
 }
 
-std::string check_report(const Scene& scene) {
-  return summary(scene) + phases_and_slides(scene) + start(scene) + bodies(scene);
+template <int D>
+std::string check_report(const Scene<D>& scene) {
+  std::string out = summary(scene) + phases_and_slides(scene) + start(scene);
+  if constexpr (D == 2) out += bodies(scene);
+  return out;
 }
+
+template std::string check_report(const Scene<2>&);
+template std::string check_report(const Scene<3>&);
 
 }  // namespace slide::cases

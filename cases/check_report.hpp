@@ -7,6 +7,7 @@
 
 namespace slide::cases {
 
-std::string check_report(const Scene& scene);
+template <int D>
+std::string check_report(const Scene<D>& scene);
 
 }  // namespace slide::cases

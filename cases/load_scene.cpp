@@ -11,6 +11,24 @@
 #include "cases/yaml_text.hpp"
 
 namespace slide::cases {
+namespace {
+
+// The schema a scene is checked against follows its `dimension` (2 unless it says 3); any other value is left to the
+// 2-D schema, which refuses it with its range.
+int requested_dimension(const YAML::Node& raw) {
+  const YAML::Node d = raw["dimension"];
+  return d && d.IsScalar() && d.Scalar() == "3" ? 3 : 2;
+}
+
+// 2-D keys that 3-D scenes do not have yet: named as such rather than as unknown keys.
+void refuse_keys_not_yet_in_3d(const YAML::Node& raw) {
+  for (const char* key : {"bodies", "rigid", "profiles", "diagnostics"})
+    if (raw[key])
+      throw SceneError(key, std::string("3-D scenes (dimension: 3) have no ") + key +
+                                " yet: this key works in 2-D scenes only (cases/SCHEMA.md, 3-D scenes)");
+}
+
+}  // namespace
 
 YAML::Node load_scene_text(const std::string& text, const std::vector<std::string>& overrides) {
   YAML::Node raw;
@@ -27,7 +45,9 @@ YAML::Node load_scene_text(const std::string& text, const std::vector<std::strin
     if (!overridden.insert(path).second) throw SceneError("--set", "key " + path + " is set twice; keep one");
     apply_override(raw, o);
   }
-  return scene_schema().resolve(raw);
+  const int dimension = requested_dimension(raw);
+  if (dimension == 3) refuse_keys_not_yet_in_3d(raw);
+  return scene_schema(dimension).resolve(raw);
 }
 
 YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {

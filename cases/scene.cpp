@@ -8,11 +8,13 @@
 
 namespace slide::cases {
 
-SceneBuild::SceneBuild(const YAML::Node& resolved, const std::filesystem::path& dir) : r(resolved), scene_dir(dir) {}
-
-std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& default_name,
-                                   const std::filesystem::path& scene_dir, StartOfRun start) {
-  SceneBuild b(r, scene_dir);
+template <int D>
+std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& default_name,
+                                      const std::filesystem::path& scene_dir, StartOfRun start) {
+  if (scene_dimension(r) != D)
+    throw SceneError("dimension", "a " + std::to_string(scene_dimension(r)) + "-D scene given to the " +
+                                      std::to_string(D) + "-D builder");
+  SceneBuild<D> b(r, scene_dir);
   b.scene->resolved = r;
   b.scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
   b.scene->end_time = r["end_time"].as<double>();
@@ -22,12 +24,12 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   check_period(b);
   check_particle_budget(b);  // before any particle is made
   b.phases = read_phases(r["fluid"]["phases"]);
-  place_floating_bodies(b);  // before anything is laid around them
+  if constexpr (D == 2) place_floating_bodies(b);  // before anything is laid around them
   build_walls(b);  // first: below_level regions need the faces, bodies the lattice offset and faces
-  build_slides_and_bodies(b);
+  if constexpr (D == 2) build_slides_and_bodies(b);
   fill_fluid_regions(b);
   check_overlaps(b);
-  check_fluid_contained(b);
+  if constexpr (D == 2) check_fluid_contained(b);
   // The last to name particles by their keys: the names (a string a particle, 60 bytes a particle with the heap's)
   // are freed before the simulation's own arrays grow.
   std::vector<std::string>().swap(b.fluid_owner);  // (= {} would keep the storage)
@@ -37,7 +39,7 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   set_domain(b);
   count_particles(b);
   read_outputs(b);
-  finish_bodies(b);
+  if constexpr (D == 2) finish_bodies(b);
   set_phases(b);
   try {
     b.sim->initialise();
@@ -47,10 +49,15 @@ std::unique_ptr<Scene> build_scene(const YAML::Node& r, const std::string& defau
   check_run_memory(b);
   plan_settling(b);
   b.scene->simulation = std::move(b.sim);
-  std::unique_ptr<Scene> scene = std::move(b.scene);
+  std::unique_ptr<Scene<D>> scene = std::move(b.scene);
   if (start == StartOfRun::settle_now) settle_now(*scene);
   else if (start == StartOfRun::already_settled) complete_start(*scene, std::nullopt);
   return scene;
 }
+
+template std::unique_ptr<Scene<2>> build_scene(const YAML::Node&, const std::string&, const std::filesystem::path&,
+                                               StartOfRun);
+template std::unique_ptr<Scene<3>> build_scene(const YAML::Node&, const std::string&, const std::filesystem::path&,
+                                               StartOfRun);
 
 }  // namespace slide::cases

@@ -16,9 +16,11 @@
 
 namespace slide::cases {
 
+// A wave gauge: the free surface's elevation above a point of the plan, (x) in 2-D, (x, y) in 3-D.
 struct GaugeSpec {
   std::string name;
   double x = 0.0;
+  double y = 0.0;  // 3-D only
 };
 
 // Dam-break diagnostics: surge front and water height at the wall (see coupling/surge_front.hpp).
@@ -107,18 +109,19 @@ struct SlideReport {
   std::string key;                  // bodies[k]
 };
 
+template <int D>
 struct Scene {
   std::string name;
   YAML::Node resolved;  // every key, defaults filled in
   double end_time = 0.0;
-  std::unique_ptr<Simulation<2>> simulation;
+  std::unique_ptr<Simulation<D>> simulation;
   std::vector<GaugeSpec> gauges;
   SurgeFrontSpec surge_front;
   VelocityProfileSpec velocity_profile;
   ProfileSpec profiles;
   OutputSpec output;
   double deepest_water = 0.0;      // m, nominal
-  Vec<2> lattice_offset = Vec<2>::Zero();  // m, how far the start lattice was moved (to meet a body's bottom)
+  Vec<D> lattice_offset = Vec<D>::Zero();  // m, how far the start lattice was moved (to meet a body's bottom)
   std::string sound_speed_source;  // how c0 was chosen
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::size_t gate_particles = 0;  // boundary particles of gates (walls[].gate), taken away at t = 0
@@ -132,13 +135,14 @@ struct Scene {
   double memory_estimate_bytes = 0.0;  // the run's peak resident memory, estimated (cases/particle_budget.hpp)
   // Built with StartOfRun::left_to_caller: the settling still to run (with initial_state settled) and the gates still
   // to lift; complete_start finishes the start (build_scene does it otherwise).
-  std::optional<SettlingPlan> pending_settling;
+  std::optional<SettlingPlan<D>> pending_settling;
   std::vector<std::uint32_t> pending_gate_ids;
   double body_sample_interval = 0.0;  // s, bodies.csv rows
 };
 
-// The scene format. Its document() is cases/SCHEMA.md.
-const Schema& scene_schema();
+// The scene format of a dimension (2 or 3; scene_dimension). scene_reference() is cases/SCHEMA.md: both documents.
+const Schema& scene_schema(int dimension = 2);
+std::string scene_reference();
 
 // Reads a scene file, applies --set overrides and checks it. Throws SceneError (exit 2) on any problem.
 YAML::Node load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides);
@@ -151,13 +155,19 @@ YAML::Node load_scene_text(const std::string& text, const std::vector<std::strin
 // start: settle_now (with initial_state settled; then the gates are lifted), left_to_caller (slide run, which settles in
 // its own loop so that a signal can stop it: it calls complete_start after), already_settled (a run continuing from
 // a checkpoint taken after settling: the water is not settled again; the gates are lifted).
+// D: the scene's dimension (scene_dimension); a scene of the other dimension is refused naming `dimension`.
 enum class StartOfRun { settle_now, left_to_caller, already_settled };
-std::unique_ptr<Scene> build_scene(const YAML::Node& resolved, const std::string& default_name,
-                                   const std::filesystem::path& scene_dir = ".",
-                                   StartOfRun start = StartOfRun::settle_now);
+template <int D>
+std::unique_ptr<Scene<D>> build_scene(const YAML::Node& resolved, const std::string& default_name,
+                                      const std::filesystem::path& scene_dir = ".",
+                                      StartOfRun start = StartOfRun::settle_now);
+
+// A resolved scene's dimension (2 or 3), which its caller dispatches on.
+inline int scene_dimension(const YAML::Node& resolved) { return resolved["dimension"].as<int>(); }
 
 // Finishes a start left to the caller: `settled` is what the settling of scene.pending_settling gave (none without
 // one); the settled water is checked at rest (SceneError naming method.initial_state) and the gates are lifted.
-void complete_start(Scene& scene, const std::optional<Relaxation>& settled);
+template <int D>
+void complete_start(Scene<D>& scene, const std::optional<Relaxation>& settled);
 
 }  // namespace slide::cases

@@ -3,6 +3,7 @@
 // the resolved scene and adds to the simulation; what a later step needs from an earlier one is kept here.
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -39,24 +40,30 @@ struct ScenePhases {
                   const std::string& key);
 };
 
+// D: the scene's dimension. The 2-D-only parts (faces, bodies, slides) stay empty in 3-D.
+template <int D>
 struct SceneBuild {
-  SceneBuild(const YAML::Node& resolved, const std::filesystem::path& scene_dir);
+  SceneBuild(const YAML::Node& resolved, const std::filesystem::path& dir) : r(resolved), scene_dir(dir) {}
 
   const YAML::Node r;  // the resolved scene
   std::filesystem::path scene_dir;  // where files named by the scene are looked up
-  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
-  std::unique_ptr<Simulation<2>> sim = std::make_unique<Simulation<2>>();
+  std::unique_ptr<Scene<D>> scene = std::make_unique<Scene<D>>();
+  std::unique_ptr<Simulation<D>> sim = std::make_unique<Simulation<D>>();
 
   // Set by read_fluid_options.
   double dp = 0.0;
-  bool hexagonal = false;
+  bool close_packed = false;  // hexagonal (2-D) or fcc (3-D): walls cut from the lattice, compressed by settling alone
   InitialState initial_state = default_initial_state;
   // Set by check_period: the period [x_min, x_max) of a domain periodic in x; unset otherwise.
   std::optional<PeriodicX> period_x;
   // Whether a lattice point at x belongs to the period (always, without one): x in [x_min, x_max) with a margin of a
   // quarter column either side, so a point on x_min is in and its image on x_max is out however the period's ends
   // round. Walls and regions keep only these points: along a periodic x, the periodic images supply the rest.
-  bool in_period(double x) const;
+  bool in_period(double x) const {
+    if (!period_x) return true;
+    const double quarter = 0.25 * nearest_spacing(sim->options.lattice, dp);
+    return x >= period_x->x_min - quarter && x < period_x->x_max - quarter;
+  }
   // Set by read_phases.
   ScenePhases phases;
   // Set by place_floating_bodies: each body moved to its draft (its key path) and by how much, m (up > 0).
@@ -64,6 +71,7 @@ struct SceneBuild {
   // Set by build_walls: the wall faces, and the owner (a key path) of every boundary particle, for messages.
   std::vector<FaceSegment> faces;
   std::vector<std::string> boundary_owner;
+  std::vector<std::array<Vec<D>, 2>> tanks;  // 3-D: the tanks' insides (min, max), for below_level regions
   std::vector<std::uint32_t> gate_ids;  // the particles of gates (walls[].gate), taken away at t = 0
   // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0), and the
   // deformable slides (filled with their phase's particles by fill_fluid_regions).
@@ -79,34 +87,39 @@ struct SceneBuild {
   // Set by fill_fluid_regions.
   double still_level = -std::numeric_limits<double>::infinity();  // highest below_level level
   std::vector<std::string> fluid_owner;  // the key (fluid.regions[k], bodies[k]) of fluid particle i - boundary_count (freed after the checks that name particles)
-  Vec<2> lo = Vec<2>::Zero(), hi = Vec<2>::Zero();  // bounding box of every particle as placed on the lattice
+  Vec<D> lo = Vec<D>::Zero(), hi = Vec<D>::Zero();  // bounding box of every particle as placed on the lattice
 
-  FluidOptions<2>& options() { return sim->options; }
-  Particles<2>& particles() { return sim->particles(); }
+  FluidOptions<D>& options() { return sim->options; }
+  Particles<D>& particles() { return sim->particles(); }
 };
 
-// The steps, in the order build_scene runs them. Each throws SceneError naming the key at fault.
-void read_fluid_options(SceneBuild& b);        // build_options.cpp
-void check_lattice_choices(SceneBuild& b);     // build_options.cpp
-void check_period(SceneBuild& b);             // build_options.cpp
-void check_particle_budget(SceneBuild& b);     // build_particle_budget.cpp
-void check_run_memory(SceneBuild& b);          // build_particle_budget.cpp: Scene::memory_estimate_bytes
+// The steps, in the order build_scene runs them. Each throws SceneError naming the key at fault. Templates are
+// instantiated for 2 and 3; the others are the dimension's own geometry (2-D: polylines and outlines; 3-D: boxes).
+template <int D> void read_fluid_options(SceneBuild<D>& b);     // build_options.cpp
+template <int D> void check_lattice_choices(SceneBuild<D>& b);  // build_options.cpp
+template <int D> void check_period(SceneBuild<D>& b);           // build_options.cpp
+template <int D> void check_particle_budget(SceneBuild<D>& b);  // build_particle_budget.cpp
+template <int D> void check_run_memory(SceneBuild<D>& b);       // build_particle_budget.cpp: Scene::memory_estimate_bytes
+double estimated_particles(const SceneBuild<2>& b);             // build_particle_budget.cpp
+double estimated_particles(const SceneBuild<3>& b);             // build_geometry_3d.cpp
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
-void place_floating_bodies(SceneBuild& b);     // build_bodies.cpp: bodies that float while settling, to their draft
-void build_walls(SceneBuild& b);               // build_walls.cpp
-void build_slides_and_bodies(SceneBuild& b);   // build_bodies.cpp
-void fill_fluid_regions(SceneBuild& b);        // build_fluid_regions.cpp
-void check_overlaps(SceneBuild& b);            // build_fluid_regions.cpp
-void check_fluid_contained(SceneBuild& b);     // check_fluid_contained.cpp
-void choose_sound_speed(SceneBuild& b);        // build_initial_state.cpp
-void start_hydrostatic(SceneBuild& b);         // build_initial_state.cpp
-void set_domain(SceneBuild& b);                // build_initial_state.cpp
-void count_particles(SceneBuild& b);           // build_initial_state.cpp
-void read_outputs(SceneBuild& b);              // build_outputs.cpp
-void finish_bodies(SceneBuild& b);             // build_bodies.cpp
-void set_phases(SceneBuild& b);                // build_phases.cpp
-void plan_settling(SceneBuild& b);             // build_initial_state.cpp: Scene::pending_settling
-void settle_now(Scene& scene);                 // build_initial_state.cpp: settles it, then complete_start
+void place_floating_bodies(SceneBuild<2>& b);     // build_bodies.cpp: bodies that float while settling, to their draft
+void build_walls(SceneBuild<2>& b);               // build_walls.cpp
+void build_walls(SceneBuild<3>& b);               // build_geometry_3d.cpp
+void build_slides_and_bodies(SceneBuild<2>& b);   // build_bodies.cpp
+void fill_fluid_regions(SceneBuild<2>& b);        // build_fluid_regions.cpp
+void fill_fluid_regions(SceneBuild<3>& b);        // build_geometry_3d.cpp
+template <int D> void check_overlaps(SceneBuild<D>& b);  // build_fluid_regions.cpp
+void check_fluid_contained(SceneBuild<2>& b);     // check_fluid_contained.cpp
+template <int D> void choose_sound_speed(SceneBuild<D>& b);  // build_initial_state.cpp
+template <int D> void start_hydrostatic(SceneBuild<D>& b);   // build_initial_state.cpp
+template <int D> void set_domain(SceneBuild<D>& b);          // build_initial_state.cpp
+template <int D> void count_particles(SceneBuild<D>& b);     // build_initial_state.cpp
+template <int D> void read_outputs(SceneBuild<D>& b);        // build_outputs.cpp
+void finish_bodies(SceneBuild<2>& b);             // build_bodies.cpp
+template <int D> void set_phases(SceneBuild<D>& b);          // build_phases.cpp
+template <int D> void plan_settling(SceneBuild<D>& b);       // build_initial_state.cpp: Scene::pending_settling
+template <int D> void settle_now(Scene<D>& scene);           // build_initial_state.cpp: settles it, then complete_start
 
 // A body's outline from its shape, counter-clockwise in world coordinates at t = 0; it must be convex
 // (build_bodies.cpp; the walls need the first body's to move the hexagonal lattice).

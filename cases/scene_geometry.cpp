@@ -6,8 +6,6 @@
 
 namespace slide::cases {
 
-Vec<2> vec2(const YAML::Node& n) { return Vec<2>(n[0].as<double>(), n[1].as<double>()); }
-
 std::vector<Vec<2>> points_of(const YAML::Node& n) {
   std::vector<Vec<2>> out;
   for (const auto& p : n) out.push_back(vec2(p));

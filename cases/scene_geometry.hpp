@@ -5,15 +5,31 @@
 #include <yaml-cpp/yaml.h>
 
 #include <optional>
+#include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "fluid/vec.hpp"
 #include "rigid/polygon.hpp"
 
 namespace slide::cases {
 
-// A point [x, y] and a list of points, as the schema has checked them.
-Vec<2> vec2(const YAML::Node& n);
+// A point [x, y] ([x, y, z] in 3-D) and a list of points, as the schema has checked them.
+template <int D>
+Vec<D> vec_of(const YAML::Node& n) {
+  Vec<D> v;
+  for (int k = 0; k < D; ++k) v[k] = n[k].as<double>();
+  return v;
+}
+inline Vec<2> vec2(const YAML::Node& n) { return vec_of<2>(n); }
+// A point for messages: "(x, y)" or "(x, y, z)", 6 significant digits.
+template <int D>
+std::string point_text(const Vec<D>& p) {
+  std::string out = "(";
+  for (int k = 0; k < D; ++k) out += (k ? ", " : "") + fmt::format("{:.6g}", p[k]);
+  return out + ")";
+}
 std::vector<Vec<2>> points_of(const YAML::Node& n);
 
 // The same point for the fluid side (Vec<2>) and the rigid side (rigid::Vec2).

@@ -321,13 +321,98 @@ Schema domain_schema() {
       false);
 }
 
+Schema dimension_schema() {
+  return S::integer("spatial dimension: 2 (x along the flume, y up) or 3 (x, y horizontal, z up; the keys of 3-D "
+                    "scenes are listed in their own table below)",
+                    2L, 2L, 3L);
+}
+
+// 3-D scenes (dimension: 3): the keys that exist in 3-D so far (issue 31 grows them: bodies, meshes, terrain).
+Schema box_schema(std::string doc) {
+  return S::map(std::move(doc), {{"min", S::vector("lower corner", "m", 3, std::nullopt)},
+                                 {"max", S::vector("upper corner", "m", 3, std::nullopt)}});
+}
+
+Schema region_schema_3d() {
+  return S::variant(
+      "a region filled with fluid particles on the simple cubic lattice (x = (i + 1/2) dp, y = (j + 1/2) dp, "
+      "z = (k + 1/2) dp)",
+      "type",
+      {{"box", S::map("the particles whose cell lies inside [min, max]",
+                      {{"phase", S::text("phase name (default: the first phase)", "")},
+                       {"min", S::vector("lower corner", "m", 3, std::nullopt)},
+                       {"max", S::vector("upper corner", "m", 3, std::nullopt)}})},
+       {"below_level", S::map("water below a level inside the walls: every lattice point below the level whose "
+                              "cell lies inside a tank",
+                              {{"phase", S::text("phase name (default: the first phase)", "")},
+                               {"level", S::number("still-water level (z)", "m", std::nullopt)}})}});
+}
+
+Schema wall_schema_3d() {
+  return S::variant(
+      "a wall given by its faces (the surfaces the fluid touches); wall and dummy particle layers are placed behind "
+      "them at (k + 1/2) dp",
+      "type",
+      {{"tank", S::map("the inside of an axis-aligned box, open at the top: its floor at min.z and four sides up to "
+                       "max.z hold the fluid (fluid/box_walls.hpp)",
+                       {{"name", S::text("name used in messages", "")},
+                        {"min", S::vector("lower corner of the inside", "m", 3, std::nullopt)},
+                        {"max", S::vector("upper corner of the inside (max.z: the sides' top)", "m", 3, std::nullopt)},
+                        {"layers", S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover "
+                                              "the kernel", 0L, 0L, 10L)}})}});
+}
+
+Schema gauge_schema_3d() {
+  return S::map("a wave gauge: free-surface elevation by a vertical scan of the fluid number density",
+                {{"name", S::text("column name in gauges.csv", std::nullopt)},
+                 {"x", S::number("gauge position, x", "m", std::nullopt)},
+                 {"y", S::number("gauge position, y", "m", std::nullopt)}});
+}
+
+Schema domain_schema_3d() {
+  return S::map(
+      "box a fluid particle may leave only through an open side: it is then taken out of the run and counted in "
+      "run.json's left_the_domain; default: the particles' bounding box enlarged by 4 re on every side and by half "
+      "its height upwards",
+      {{"min", S::vector("lower corner", "m", 3, std::nullopt)},
+       {"max", S::vector("upper corner", "m", 3, std::nullopt)},
+       {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must hold "
+                                 "a whole number of lattice columns", false)}},
+      false);
+}
+
+Schema make_schema_3d() {
+  return S::map(
+      "a 3-D slide scene (dimension: 3): x and y horizontal, z up",
+      {{"name", S::text("case name; default: the file name without extension", "")},
+       {"description", S::text("free text", "")},
+       {"dimension", S::integer("spatial dimension: 3 here", std::nullopt, 3L, 3L)},
+       {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, S::inf, true, false)},
+       {"lattice", S::choice("lattice the particles start on, one particle per dp^3 either way: square (simple cubic), "
+                             "or fcc (face-centred cubic: planes 0.7937 dp apart along each axis, nearest spacing "
+                             "1.1225 dp), the close packing, whose walls are cut from the same lattice to the depth re "
+                             "(layers unused)",
+                             {std::string(to_string(LatticeKind::square)), std::string(to_string(LatticeKind::fcc))},
+                             std::string(to_string(LatticeKind::square)))},
+       {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, S::inf, true, false)},
+       {"gravity", S::vector("gravitational acceleration", "m/s^2", 3, std::vector<double>{0.0, 0.0, -9.81})},
+       {"domain", domain_schema_3d()},
+       {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
+                                      {"regions", S::list("regions filled with fluid", region_schema_3d(), 1)}})},
+       {"walls", S::list("walls", wall_schema_3d())},
+       {"method", method_schema()},
+       {"time_step", time_step_schema()},
+       {"checks", checks_schema()},
+       {"output", output_schema()},
+       {"gauges", S::list("wave gauges", gauge_schema_3d())}});
+}
+
 Schema make_schema() {
   return S::map(
       "a slide scene",
       {{"name", S::text("case name; default: the file name without extension", "")},
        {"description", S::text("free text", "")},
-       {"dimension",
-        S::integer("spatial dimension (scenes are 2-D for now; the solver is built for 2 and 3)", 2L, 2L, 2L)},
+       {"dimension", dimension_schema()},
        {"particle_spacing", S::number("initial particle spacing dp", "m", std::nullopt, 0.0, S::inf, true, false)},
        {"lattice", S::choice("lattice the particles start on, one particle per dp^2 either way: square, or "
                              "hexagonal (nearest spacing 1.0746 dp), the stable packing that still water needs to "
@@ -335,7 +420,8 @@ Schema make_schema() {
                              "the wall pressure must be extrapolated, the initial state lattice or "
                              "settled, and with bodies the rows are moved (less than half a row spacing) so that one "
                              "lies dp/2 below the lowest point of the first body",
-                             lattice_kind_names.names(), std::string(to_string(MethodOptions{}.lattice)))},
+                             {std::string(to_string(LatticeKind::square)), std::string(to_string(LatticeKind::hexagonal))},
+                             std::string(to_string(MethodOptions{}.lattice)))},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, S::inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
        {"domain", domain_schema()},
@@ -358,9 +444,14 @@ Schema make_schema() {
 
 }  // namespace
 
-const Schema& scene_schema() {
-  static const Schema schema = make_schema();
-  return schema;
+const Schema& scene_schema(int dimension) {
+  static const Schema schema_2d = make_schema(), schema_3d = make_schema_3d();
+  return dimension == 3 ? schema_3d : schema_2d;
+}
+
+std::string scene_reference() {
+  return scene_schema(2).document("slide scene reference") + "\n" +
+         scene_schema(3).document("3-D scenes (dimension: 3)", 2);
 }
 
 }  // namespace slide::cases

@@ -600,7 +600,7 @@ void walk(const Node& s, const std::string& path, bool self_row, std::vector<Row
 
 }  // namespace
 
-std::string Schema::document(const std::string& title) const {
+std::string Schema::document(const std::string& title, int level) const {
   std::vector<Row> rows;
   walk(*node_, "", true, rows);
   // Markdown table cells cannot hold '|' or line breaks.
@@ -613,7 +613,7 @@ std::string Schema::document(const std::string& title) const {
     }
     return out;
   };
-  std::string md = "# " + title + "\n\n";
+  std::string md = std::string(std::size_t(std::max(1, level)), '#') + " " + title + "\n\n";
   if (!node_->doc.empty()) md += node_->doc + "\n\n";
   md += "Keys marked `required` must be given; every other key may be left out and takes its default.\n\n";
   md += "| key | type | unit | default | accepted | description |\n";

@@ -76,7 +76,8 @@ class Schema {
   YAML::Node resolve(const YAML::Node& input, const std::string& path = "") const;
 
   // Markdown reference: a title, the root's description and one table row per key path.
-  std::string document(const std::string& title) const;
+  // A Markdown page: its title at heading `level` (1: '#'), the schema's documentation and a table of every key.
+  std::string document(const std::string& title, int level = 1) const;
 
   struct Node;  // the description; defined in schema.cpp
 

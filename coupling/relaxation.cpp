@@ -28,19 +28,20 @@ namespace {
 // its basal friction held it with that much more at first.
 }  // namespace
 
-class Settling::Observer : public StepObserver<2> {
+template <int D>
+class Settling<D>::Observer : public StepObserver<D> {
  public:
-  Observer(Relaxation& out, RigidBodies* floating, const Particles<2>& P, const std::vector<HeldPhase>& held)
-      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<2>::Zero()), start_(P.real_count()) {
+  Observer(Relaxation& out, RigidBodies* floating, const Particles<D>& P, const std::vector<HeldPhase<D>>& held)
+      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(P.real_count()) {
     for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
     for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   }
-  void after_step(Simulation<2>& sim, double dt) override {
+  void after_step(Simulation<D>& sim, double dt) override {
     auto& P = sim.particles();
     for (std::size_t i = 0; i < P.real_count(); ++i)
       if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
-        const Vec<2>& x0 = start_[P.id[i]];
-        const Vec<2>& free = free_[P.phase[i]];
+        const Vec<D>& x0 = start_[P.id[i]];
+        const Vec<D>& free = free_[P.phase[i]];
         P.position[i] = x0 + (P.position[i] - x0).dot(free) * free;
         P.velocity[i] = P.velocity[i].dot(free) * free;
       }
@@ -52,12 +53,13 @@ class Settling::Observer : public StepObserver<2> {
   Relaxation& out_;
   RigidBodies* floating_;
   std::vector<bool> held_;
-  std::vector<Vec<2>> free_;   // by phase: the held phase's free direction (unit)
-  std::vector<Vec<2>> start_;  // by id
+  std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
+  std::vector<Vec<D>> start_;  // by id
 };
 
 
-Settling::Settling(Simulation<2>& sim, SettlingPlan plan) : sim_(sim) {
+template <int D>
+Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
   out_.duration = plan.duration;
   out_.damping_rate = plan.damping_rate;
   const auto& P = sim.particles();
@@ -79,22 +81,27 @@ Settling::Settling(Simulation<2>& sim, SettlingPlan plan) : sim_(sim) {
   observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, P, plan.held);
 }
 
-Settling::~Settling() = default;
+template <int D>
+Settling<D>::~Settling() = default;
 
-AdvanceResult Settling::advance(const std::vector<StepObserver<2>*>& observers) {
-  std::vector<StepObserver<2>*> all = observers;
+template <int D>
+AdvanceResult Settling<D>::advance(const std::vector<StepObserver<D>*>& observers) {
+  std::vector<StepObserver<D>*> all = observers;
   all.push_back(observer_.get());
-  const AdvanceResult result = slide::advance<2>(sim_, out_.duration, all);
+  const AdvanceResult result = slide::advance<D>(sim_, out_.duration, all);
   if (result.instability)
     throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));
   return result;
 }
 
-void Settling::save_state(StateWriter& out) const { out.put(out_.largest_speed); }
+template <int D>
+void Settling<D>::save_state(StateWriter& out) const { out.put(out_.largest_speed); }
 
-void Settling::restore_state(StateReader& in) { in.get(out_.largest_speed); }
+template <int D>
+void Settling<D>::restore_state(StateReader& in) { in.get(out_.largest_speed); }
 
-Relaxation Settling::finish() {
+template <int D>
+Relaxation Settling<D>::finish() {
   auto& sim = sim_;
   const auto& P = sim.particles();
   // Water at rest stays in the domain: what left it while settling flowed off an open edge.
@@ -108,7 +115,7 @@ Relaxation Settling::finish() {
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
   for (std::size_t i = 0; i < P.real_count(); ++i) {
-    Vec<2> shift = P.position[i] - start_[P.id[i]];
+    Vec<D> shift = P.position[i] - start_[P.id[i]];
     // Periodic in x: the nearest image (a particle wrapped across the period's ends has not moved a period).
     if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
     out.largest_shift = std::max(out.largest_shift, shift.norm());
@@ -127,10 +134,16 @@ Relaxation Settling::finish() {
   return out;
 }
 
-Relaxation relax_at_rest(Simulation<2>& sim, const SettlingPlan& plan) {
-  Settling settling(sim, plan);
+template <int D>
+Relaxation relax_at_rest(Simulation<D>& sim, const SettlingPlan<D>& plan) {
+  Settling<D> settling(sim, plan);
   settling.advance();
   return settling.finish();
 }
+
+template class Settling<2>;
+template class Settling<3>;
+template Relaxation relax_at_rest(Simulation<2>&, const SettlingPlan<2>&);
+template Relaxation relax_at_rest(Simulation<3>&, const SettlingPlan<3>&);
 
 }  // namespace slide

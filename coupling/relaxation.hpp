@@ -60,29 +60,33 @@ inline std::optional<SettlingInstability> parse_settling_instability(const std::
 // rigid slide is held: put back after every step, but free along their phase's unit `free_direction` (the normal of
 // the face the slide rests on, or g), so that they compress to their hydrostatic pressure (relaxation.cpp).
 // Sediment that is not held settles as a fluid (Simulation::set_rheology_suspended): its rheology starts at t = 0.
+template <int D>
 struct HeldPhase {
   std::uint8_t phase = 0;
-  Vec<2> free_direction = Vec<2>(0.0, -1.0);
+  Vec<D> free_direction = -Vec<D>::Unit(D - 1);  // down
 };
+template <int D>
 struct SettlingPlan {
   double duration = 0.0;      // s
   double damping_rate = 0.0;  // 1/s
-  std::vector<HeldPhase> held;
+  std::vector<HeldPhase<D>> held;
 };
-Relaxation relax_at_rest(Simulation<2>& sim, const SettlingPlan& plan);
+template <int D>
+Relaxation relax_at_rest(Simulation<D>& sim, const SettlingPlan<D>& plan);
 
 // The same in stages, so that a run can stop while it settles (a signal) and a checkpoint continue it bit for bit:
 // construct (the simulation as built: the lattice it starts from is what held slides return to), advance (it stops
 // where an observer says so), save and restore between them, finish (the checks and the clock's restart).
+template <int D>
 class Settling {
  public:
-  Settling(Simulation<2>& sim, SettlingPlan plan);
+  Settling(Simulation<D>& sim, SettlingPlan<D> plan);
   ~Settling();
   Settling(const Settling&) = delete;
   Settling& operator=(const Settling&) = delete;
   // Settles until its duration or until an observer stops it; a stop returns the outcome `stopped`. Throws
   // std::runtime_error (settling_instability_message) if it goes unstable.
-  AdvanceResult advance(const std::vector<StepObserver<2>*>& observers = {});
+  AdvanceResult advance(const std::vector<StepObserver<D>*>& observers = {});
   // After the whole duration: refuses water that left the domain (std::runtime_error), zeroes the velocities and
   // restarts the clock at 0; the simulation is then as relax_at_rest leaves it.
   Relaxation finish();
@@ -93,12 +97,15 @@ class Settling {
 
  private:
   class Observer;
-  Simulation<2>& sim_;
+  Simulation<D>& sim_;
   Relaxation out_;
-  std::vector<Vec<2>> start_;  // real particles' positions as built, by id
+  std::vector<Vec<D>> start_;  // real particles' positions as built, by id
   std::shared_ptr<RigidBodies> bodies_;
   bool floating_ = false;
   double saved_damping_rate_ = 0.0;
   std::unique_ptr<Observer> observer_;
 };
+
+extern template class Settling<2>;
+extern template class Settling<3>;
 }  // namespace slide

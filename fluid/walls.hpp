@@ -13,12 +13,14 @@
 
 namespace slide {
 
-struct BoundaryPoint {
-  Vec<2> position;
-  Vec<2> normal;  // unit, from the face into the fluid
+template <int D>
+struct BoundaryPointOf {
+  Vec<D> position;
+  Vec<D> normal;  // unit, from the face into the fluid
   double depth;   // distance behind the face
   int layer;      // 0 wall, >= 1 dummy
 };
+using BoundaryPoint = BoundaryPointOf<2>;
 
 // Layers needed so that a fluid particle half a spacing from the face has its whole kernel support filled:
 // the deepest layer, at (L - 1/2) dp, must reach re - dp/2 behind the face.

@@ -14,20 +14,20 @@ namespace slide::testing {
 inline constexpr double g = 9.81;  // m/s^2, the test scenes' gravity
 
 // The scene of `yaml`, written to a fresh folder named `name`.
-inline std::unique_ptr<cases::Scene> build_scene_text(const std::string& name, const std::string& yaml) {
+inline std::unique_ptr<cases::Scene<2>> build_scene_text(const std::string& name, const std::string& yaml) {
   const auto dir = fresh_directory(name);
   write_file(dir / "s.yaml", yaml);
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), name);
+  return cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), name);
 }
 
-inline std::unique_ptr<cases::Scene> load_shipped_scene(const std::string& name,
+inline std::unique_ptr<cases::Scene<2>> load_shipped_scene(const std::string& name,
                                                         const std::vector<std::string>& overrides = {}) {
-  return cases::build_scene(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");
+  return cases::build_scene<2>(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");
 }
 
 // Steps to the scene's end time with the one step loop (coupling/advance.hpp); returns false (with a test failure)
 // if the run goes unstable.
-inline bool run_scene(cases::Scene& scene, const std::function<void(const Simulation<2>&)>& after_step) {
+inline bool run_scene(cases::Scene<2>& scene, const std::function<void(const Simulation<2>&)>& after_step) {
   AfterEveryStep<2, std::function<void(const Simulation<2>&)>> observer(after_step);
   const AdvanceResult result = advance<2>(*scene.simulation, scene.end_time, {&observer});
   if (result.instability) {

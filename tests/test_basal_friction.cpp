@@ -78,10 +78,10 @@ TEST(BasalFriction, SlideCheckPrintsTheWallCondition) {
 TEST(BasalFriction, KeysSetThePhasesCoefficients) {
   const auto dir = fresh_directory("basal_keys");
   write_file(dir / "s.yaml", kScene);
-  const auto plain = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  const auto plain = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
   ASSERT_EQ(plain->simulation->phases.size(), 3u);  // water, mud, the slab's
   for (const auto& p : plain->simulation->phases) EXPECT_EQ(p.basal_friction, inf) << p.name << ": default no-slip";
-  const auto set = cases::build_scene(
+  const auto set = cases::build_scene<2>(
       cases::load_scene(dir / "s.yaml", {"fluid.phases[1].basal_friction_angle=25", "bodies[0].basal_friction_angle=20"}),
       "s");
   const auto& ph = set->simulation->phases;

@@ -105,7 +105,7 @@ gauges: [{{name: left, x: 0.2}}, {{name: right, x: 0.8}}]
                                        fmt::arg("ty", apex0[1] + H));
   const auto dir = fresh_directory("floating_triangle");
   write_file(dir / "s.yaml", yaml);
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
   auto& bodies = *scene->simulation->bodies();
   const Vec<2> centroid0(apex0[0], apex0[1] + 2.0 * H / 3.0);  // at angle 0, as placed
   double draft_sum = 0.0, time_sum = 0.0, largest_angle = 0.0;

@@ -39,12 +39,12 @@ method:
 TEST(Gate, HoldsTheWaterWhileItSettlesAndIsGoneAtTheStart) {
   const auto dir = fresh_directory("gate");
   write_file(dir / "s.yaml", gated_column("settled"));
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "gate");
+  auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "gate");
   auto& sim = *scene->simulation;
   const auto& P = sim.particles();
   // The same scene without the gate: the tank's boundary particles are the ones left.
   write_file(dir / "no_gate.yaml", gated_column("lattice", false));  // not settled: nothing would hold it
-  const auto ungated = cases::build_scene(cases::load_scene(dir / "no_gate.yaml", {}), "no_gate");
+  const auto ungated = cases::build_scene<2>(cases::load_scene(dir / "no_gate.yaml", {}), "no_gate");
   EXPECT_EQ(scene->wall_count + scene->dummy_count, ungated->wall_count + ungated->dummy_count);
   EXPECT_GT(scene->gate_particles, 0u);
   EXPECT_EQ(scene->fluid_count + scene->wall_count + scene->dummy_count, P.size());

@@ -13,7 +13,7 @@ namespace slide::testing {
 namespace {
 
 // 0.5 m of water in a 1 m tank with a 0.2 m x 0.2 m step in the middle of its floor; square lattice, dp = 0.01.
-std::unique_ptr<cases::Scene> step_scene() {
+std::unique_ptr<cases::Scene<2>> step_scene() {
   const auto dir = fresh_directory("hydrostatic_step");
   write_file(dir / "step.yaml", R"(description: still water over a step
 particle_spacing: 0.01
@@ -33,7 +33,7 @@ lattice: square
 method:
   initial_state: hydrostatic
 )");
-  return cases::build_scene(cases::load_scene(dir / "step.yaml", {}), "step", dir);
+  return cases::build_scene<2>(cases::load_scene(dir / "step.yaml", {}), "step", dir);
 }
 
 // Measured before the support rule: the water on the step's top, beside its corners, started at n / n0 = 0.943

@@ -9,7 +9,7 @@
 namespace slide {
 namespace {
 
-void expect_by_id(const tools::IdOrdered& s, const Particles<2>& P) {
+void expect_by_id(const tools::IdOrdered<2>& s, const Particles<2>& P) {
   const std::size_t n = P.real_count();
   ASSERT_EQ(s.id.size(), n);
   ASSERT_EQ(s.position.size(), 2 * n);
@@ -35,7 +35,7 @@ TEST(IdOrdered, RefilledInPlaceFromShuffledDenseAndThenGappedIds) {
   std::vector<std::uint32_t> order{5, 3, 11, 0, 7, 1, 9, 2, 10, 4, 8, 6};
   std::vector<Vec<2>> buffer;
   P.reorder(order, buffer);
-  tools::IdOrdered s(P);
+  tools::IdOrdered<2> s(P);
   expect_by_id(s, P);
   EXPECT_EQ(s.id, [] { std::vector<std::uint32_t> v(12); std::iota(v.begin(), v.end(), 0u); return v; }());
   // Ids 3, 7 and 11 leave: the same snapshot, refilled, holds the nine others by id.

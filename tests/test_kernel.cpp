@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "fluid/kernel.hpp"
 #include "fluid/lattice.hpp"
@@ -108,6 +109,77 @@ TEST(Kernel, HexagonalContinuumLimit) {
   const LatticeConstants fine = lattice_constants<2>(re / 32.0, re, LatticeKind::hexagonal);
   EXPECT_NEAR(fine.lambda, continuum_lambda<2>(re), 0.01 * continuum_lambda<2>(re));
   EXPECT_NEAR(fine.kappa, 1.0, 0.01);
+}
+
+// The fcc lattice with one particle per dp^3: planes s = 2^(-1/3) dp = 0.7937 dp apart, nearest spacing s sqrt(2) =
+// 1.1225 dp. With re = 2.1 dp its neighbours within re are 12 at s sqrt(2), 6 at 2 s = 1.587 dp and 24 at s sqrt(6) =
+// 1.944 dp (the next, 12 at s sqrt(8) = 2.245 dp, lie beyond).
+TEST(Kernel, FccLatticeConstantsByHand) {
+  const double dp = 0.01, re = 2.1 * dp, s = dp * std::pow(2.0, -1.0 / 3.0);
+  EXPECT_NEAR(nearest_spacing(LatticeKind::fcc, dp), std::sqrt(2.0) * s, 1e-15);
+  EXPECT_NEAR(row_spacing(LatticeKind::fcc, dp), s, 1e-15);
+  ASSERT_GT(std::sqrt(8.0) * s, re);
+  const double r[] = {std::sqrt(2.0) * s, 2.0 * s, std::sqrt(6.0) * s};
+  const int count[] = {12, 6, 24};
+  double n0 = 0.0, wr2 = 0.0, dwr = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    n0 += count[k] * kernel_weight(r[k], re);
+    wr2 += count[k] * kernel_weight(r[k], re) * r[k] * r[k];
+    dwr += count[k] * -kernel_derivative(r[k], re) * r[k];
+  }
+  const LatticeConstants c = lattice_constants<3>(dp, re, LatticeKind::fcc);
+  EXPECT_NEAR(c.n0, n0, 1e-14);
+  EXPECT_NEAR(c.lambda, wr2 / n0, 1e-18);
+  EXPECT_NEAR(c.kappa, dwr / (3 * n0), 1e-12);
+  EXPECT_THROW(lattice_constants<2>(dp, re, LatticeKind::fcc), std::invalid_argument);
+}
+
+// One particle per dp^3, so it tends to the same continuum values as the cubic lattice.
+TEST(Kernel, FccContinuumLimit) {
+  const double re = 1.0;
+  double previous_error = 1e9;
+  for (double ratio : {4.0, 8.0, 16.0}) {
+    const double dp = re / ratio;
+    const LatticeConstants c = lattice_constants<3>(dp, re, LatticeKind::fcc);
+    const double error = std::abs((c.n0 + 1.0) * std::pow(dp, 3) - kernel_volume_integral<3>(re)) /
+                         kernel_volume_integral<3>(re);
+    EXPECT_LT(error, previous_error) << "ratio " << ratio;
+    previous_error = error;
+  }
+  EXPECT_LT(previous_error, 1e-2);
+  const LatticeConstants fine = lattice_constants<3>(re / 16.0, re, LatticeKind::fcc);
+  EXPECT_NEAR(fine.lambda, continuum_lambda<3>(re), 0.01 * continuum_lambda<3>(re));
+  EXPECT_NEAR(fine.kappa, 1.0, 0.02);
+}
+
+// The points for_each_lattice_point lays in 3-D: one per dp^3 on either lattice, and on the fcc lattice every point's
+// twelve nearest neighbours at 2^(1/6) dp.
+TEST(Kernel, LatticePointsIn3DHoldOnePerDpCubed) {
+  const double dp = 0.01;
+  for (const LatticeKind kind : {LatticeKind::square, LatticeKind::fcc}) {
+    // A cube of a whole number of the lattice's periods along each axis: dp, or two planes of the fcc lattice.
+    const double side = kind == LatticeKind::fcc ? 24 * row_spacing(kind, dp) : 20 * dp;
+    const Vec<3> lo(0.0, 0.0, 0.0), hi(side, side, side);
+    std::vector<Vec<3>> inside;
+    for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<3>& p) {
+      if ((p.array() >= lo.array()).all() && (p.array() < hi.array()).all()) inside.push_back(p);
+    });
+    EXPECT_NEAR(double(inside.size()) * std::pow(dp, 3) / std::pow(side, 3), 1.0, 1e-12) << to_string(kind);
+    Vec<3> centre = inside[0];  // the point nearest the cube's centre
+    for (const auto& q : inside)
+      if ((q - hi / 2).norm() < (centre - hi / 2).norm()) centre = q;
+    int nearest = 0;
+    double closest = 1e9;
+    for (const auto& q : inside)
+      if (q != centre) closest = std::min(closest, (q - centre).norm());
+    for (const auto& q : inside)
+      if (q != centre && (q - centre).norm() < closest * (1 + 1e-9)) ++nearest;
+    EXPECT_NEAR(closest, nearest_spacing(kind, dp), 1e-12) << to_string(kind);
+    EXPECT_EQ(nearest, kind == LatticeKind::fcc ? 12 : 6) << to_string(kind);
+  }
+  EXPECT_THROW(for_each_lattice_point(LatticeKind::hexagonal, dp, Vec<3>(Vec<3>::Zero()), Vec<3>(Vec<3>::Ones()),
+                                      [](const Vec<3>&) {}),
+               std::invalid_argument);
 }
 
 TEST(Kernel, ContinuumLimit2D) { expect_continuum_limit<2>(); }

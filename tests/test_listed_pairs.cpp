@@ -13,12 +13,13 @@
 #include "fluid/listed_pairs.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/particles.hpp"
+#include "tests/bit_pattern.hpp"
 #include "fluid/viscosity.hpp"
 
 namespace slide {
 namespace {
 
-std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }  // tells +0 from -0
+using testing::bits;
 
 template <int D>
 std::vector<Vec<D>> scattered_points(std::size_t n, double re, std::uint64_t seed) {

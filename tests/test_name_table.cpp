@@ -49,14 +49,18 @@ TEST(NameTable, EveryOptionReadsBackAsItself) {
 
 // The reference document lists a choice's names as "one of: a, b, ...": each table's names appear there, in order.
 TEST(NameTable, SchemaOffersTheTablesNames) {
-  const std::string doc = cases::scene_schema().document("reference");
+  const std::string doc = cases::scene_reference();  // the 2-D and the 3-D scenes' tables
   auto listed = [&](const std::vector<std::string>& names) {
     std::string joined = "one of: ";
     for (std::size_t k = 0; k < names.size(); ++k) joined += (k ? ", " : "") + names[k];
     return doc.find(joined + " |") != std::string::npos;
   };
   EXPECT_TRUE(listed(gradient_model_names.names()));
-  EXPECT_TRUE(listed(lattice_kind_names.names()));
+  // Each dimension offers its own lattices: square and its close packing (hexagonal in 2-D, fcc in 3-D).
+  const auto lattice = [](LatticeKind k) { return std::string(to_string(k)); };
+  EXPECT_TRUE(listed({lattice(LatticeKind::square), lattice(LatticeKind::hexagonal)}));
+  EXPECT_TRUE(listed({lattice(LatticeKind::square), lattice(LatticeKind::fcc)}));
+  EXPECT_EQ(lattice_kind_names.names().size(), 3u);
   EXPECT_TRUE(listed(wall_slip_names.names()));
   EXPECT_TRUE(listed(wall_pressure_names.names()));
   EXPECT_TRUE(listed(cases::initial_state_names.names()));

@@ -14,6 +14,7 @@
 #include "fluid/lattice.hpp"
 #include "fluid/number_density.hpp"
 #include "fluid/pair_weights.hpp"
+#include "tests/bit_pattern.hpp"
 #include "tests/lattice_block.hpp"
 
 namespace slide {
@@ -21,11 +22,7 @@ namespace {
 
 using testing::Lattice;
 
-std::uint64_t bits(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
+using testing::bits;
 
 
 template <int D>

@@ -272,7 +272,7 @@ TEST(Periodic, GhostsAreTheExpectedImages) {
   EXPECT_THROW(add_ghosts(P, period, margin), std::logic_error);
 
   // A snapshot's id-ordered copy holds the real particles only.
-  const tools::IdOrdered snapshot(P);
+  const tools::IdOrdered<2> snapshot(P);
   ASSERT_EQ(snapshot.id.size(), real);
   ASSERT_EQ(snapshot.position.size(), 2 * real);
   for (std::size_t k = 0; k < real; ++k) {
@@ -320,7 +320,7 @@ TEST(Periodic, SimulationGhostsAreTheRealParticlesNearTheEnds) {
     const std::size_t s = P.ghost_source[g];
     EXPECT_EQ(P.position[P.real_count() + g][0], P.position[s][0] + P.ghost_shift[g]);
   }
-  EXPECT_EQ(tools::IdOrdered(P).id.size(), P.real_count());
+  EXPECT_EQ(tools::IdOrdered<2>(P).id.size(), P.real_count());
 }
 
 // What periodic boundaries refuse: rigid bodies (their force would count ghost images twice), a period shorter than

@@ -85,7 +85,7 @@ TEST(RigidCoupling, BodyParticlesCarryTheRigidAcceleration) {
 }
 
 // A block held above a slab of water, no gravity: for the time-step limits of moving bodies.
-std::unique_ptr<cases::Scene> block_above_still_water(const std::string& name) {
+std::unique_ptr<cases::Scene<2>> block_above_still_water(const std::string& name) {
   const auto dir = fresh_directory(name);
   write_file(dir / "s.yaml", R"(particle_spacing: 0.01
 end_time: 1
@@ -99,7 +99,7 @@ bodies:
     shape: {type: box, center: [0.2, 0.2], size: [0.1, 0.05]}
     density: 800
 )");
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  return cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
 }
 
 // A body faster than sound in the water still limits the time step: the CFL limit counts boundary particles' speeds.
@@ -152,7 +152,7 @@ bodies:
     shape: {type: box, center: [0.2, 0.15], size: [0.19, 0.09]}
     density: 800
 )");
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
   auto& sim = *scene->simulation;
   ASSERT_TRUE(sim.bodies());
   sim.options.viscous_scheme = scheme;

@@ -15,7 +15,7 @@ namespace slide::testing {
 namespace {
 
 TEST(Scene, SchemaDocumentIsCurrent) {
-  const std::string generated = cases::scene_schema().document("slide scene reference");
+  const std::string generated = cases::scene_reference();
   EXPECT_EQ(read_file(source_dir() / "cases/SCHEMA.md"), generated)
       << "cases/SCHEMA.md is stale: regenerate it with build/slide schema > cases/SCHEMA.md";
 }
@@ -62,7 +62,7 @@ fluid:
   phases: [{name: water}]
   regions: [{type: polygon, points: [[0, 0], [1, 0], [0, 1]]}]
 )");
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
   // Lattice points (i + 1/2) dp strictly inside the triangle x + y < 1: i + j < 9, i.e. 45 of them.
   EXPECT_EQ(scene->fluid_count, 45u);
   EXPECT_EQ(scene->sound_speed_source, "method.sound_speed");
@@ -78,7 +78,7 @@ fluid:
   regions: [{type: rectangle, phase: mud, min: [0, 0], max: [1, 1]}]
 )");
   try {
-    cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+    cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
     FAIL() << "expected a SceneError";
   } catch (const cases::SceneError& e) {
     EXPECT_EQ(e.key_path, "fluid.regions[0].phase");
@@ -103,7 +103,7 @@ walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
   for (const auto& [extra, key] : cases) {
     write_file(dir / "s.yaml", tank + extra);
     try {
-      cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+      cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
       ADD_FAILURE() << "expected a SceneError for " << key;
     } catch (const cases::SceneError& e) {
       EXPECT_EQ(e.key_path, key);
@@ -111,14 +111,14 @@ walls: [{points: [[0, 1], [0, 0], [1, 0], [1, 1]]}]
   }
   write_file(dir / "s.yaml", tank + "method: {wall_pressure: extrapolated, initial_state: lattice}\n");
   try {
-    cases::build_scene(cases::load_scene(dir / "s.yaml", {"walls[0].layers=3"}), "s");
+    cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {"walls[0].layers=3"}), "s");
     ADD_FAILURE() << "expected a SceneError for walls[0].layers";
   } catch (const cases::SceneError& e) {
     EXPECT_EQ(e.key_path, "walls[0].layers");
   }
   // Accepted as it stands: 5 rows (centres (j + 1/2) 0.9306 dp below 0.5 m) of 9 points (x = (i + 1/2) a in even
   // rows, (i + 1) a in odd ones, a = 0.10746 m, below x = 1 m).
-  auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
   EXPECT_EQ(scene->fluid_count, 5u * 9u);
 }
 
@@ -145,7 +145,7 @@ walls:
   const auto dir = fresh_directory("periodic_seam");
   write_file(dir / "s.yaml", layer(0.2));  // 18.61 columns
   try {
-    cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+    cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
     ADD_FAILURE() << "expected a SceneError for domain.max";
   } catch (const cases::SceneError& e) {
     EXPECT_EQ(e.key_path, "domain.max");
@@ -155,7 +155,7 @@ walls:
   // A wall with no point in the period is refused, naming it.
   write_file(dir / "w.yaml", layer(19.0 * a) + "  - {name: outside, points: [[0.3, 0], [0.3, 0.2]]}\n");
   try {
-    cases::build_scene(cases::load_scene(dir / "w.yaml", {}), "w");
+    cases::build_scene<2>(cases::load_scene(dir / "w.yaml", {}), "w");
     ADD_FAILURE() << "expected a SceneError for walls[1].points";
   } catch (const cases::SceneError& e) {
     EXPECT_EQ(e.key_path, "walls[1].points");
@@ -196,7 +196,7 @@ walls: [{points: [[0, 0.5], [0, 0], [1, 0], [1, 0.5]]}]
 bodies: [{name: b, shape: {type: box, center: [0.5, 0.3], size: [0.2, 0.1]}, density: 500}]
 method: {wall_pressure: extrapolated, initial_state: lattice}
 )");
-  const auto scene = cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  const auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
   const double dp = 0.01, h = row_spacing(LatticeKind::hexagonal, dp);
   EXPECT_LE(std::abs(scene->lattice_offset[1]), 0.5 * h + 1e-15);
   const auto& P = scene->simulation->particles();
@@ -223,7 +223,7 @@ lattice: square
            {"method: {initial_state: settled, settling_time: 0.1}\n", {"bodies[0].release_time=0.5"}}}) {
     write_file(dir / "s.yaml", base + extra);
     try {
-      cases::build_scene(cases::load_scene(dir / "s.yaml", overrides), "s");
+      cases::build_scene<2>(cases::load_scene(dir / "s.yaml", overrides), "s");
       ADD_FAILURE() << "expected a SceneError for " << extra;
     } catch (const cases::SceneError& e) {
       EXPECT_EQ(e.key_path, "bodies[0].during_settling");

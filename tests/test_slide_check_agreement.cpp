@@ -31,7 +31,7 @@ struct LayerRun {
 };
 
 // What slide check says of the scene's first slide, before it runs.
-LayerRun checked(const cases::Scene& scene, double dp) {
+LayerRun checked(const cases::Scene<2>& scene, double dp) {
   LayerRun r;
   r.dp = dp;
   r.criterion = scene.slides[0].criterion;

@@ -10,7 +10,7 @@
 
 namespace slide::testing {
 
-inline std::unique_ptr<cases::Scene> free_water_block(const std::string& lattice, const std::string& name) {
+inline std::unique_ptr<cases::Scene<2>> free_water_block(const std::string& lattice, const std::string& name) {
   const auto dir = fresh_directory(name + "_" + lattice);
   write_file(dir / "s.yaml", R"(particle_spacing: 0.01
 end_time: 1
@@ -21,7 +21,7 @@ fluid:
   phases: [{name: water}]
   regions: [{type: rectangle, min: [0, 0], max: [0.4, 0.2]}]
 )");
-  return cases::build_scene(cases::load_scene(dir / "s.yaml", {}), "s");
+  return cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
 }
 
 }  // namespace slide::testing

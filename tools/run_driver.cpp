@@ -104,10 +104,11 @@ std::optional<YAML::Node> resolve_or_report(const RunArguments& args) {
 }
 
 // Builds the resolved scene; on a scene error prints it and returns null (the caller exits 2).
-std::unique_ptr<cases::Scene> build_or_report(const RunArguments& args, const YAML::Node& resolved,
-                                              cases::StartOfRun start = cases::StartOfRun::settle_now) {
+template <int D>
+std::unique_ptr<cases::Scene<D>> build_or_report(const RunArguments& args, const YAML::Node& resolved,
+                                                 cases::StartOfRun start = cases::StartOfRun::settle_now) {
   try {
-    return cases::build_scene(resolved, args.scene.stem().string(),
+    return cases::build_scene<D>(resolved, args.scene.stem().string(),
                               args.scene.parent_path().empty() ? "." : args.scene.parent_path(), start);
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
@@ -115,15 +116,9 @@ std::unique_ptr<cases::Scene> build_or_report(const RunArguments& args, const YA
   }
 }
 
-std::unique_ptr<cases::Scene> load_or_report(const RunArguments& args) {
-  const auto resolved = resolve_or_report(args);
-  return resolved ? build_or_report(args, *resolved) : nullptr;
-}
-
-}  // namespace
-
-int check_command(const RunArguments& args) {
-  const std::unique_ptr<cases::Scene> scene = load_or_report(args);
+template <int D>
+int check_scene(const RunArguments& args, const YAML::Node& resolved) {
+  const std::unique_ptr<cases::Scene<D>> scene = build_or_report<D>(args, resolved);
   if (!scene) return 2;
   std::cout << cases::check_report(*scene);
   if (!args.sweep_dir.empty()) {
@@ -141,13 +136,22 @@ int check_command(const RunArguments& args) {
   return 0;
 }
 
+}  // namespace
+
+int check_command(const RunArguments& args) {
+  const auto resolved = resolve_or_report(args);
+  if (!resolved) return 2;
+  return cases::scene_dimension(*resolved) == 3 ? check_scene<3>(args, *resolved) : check_scene<2>(args, *resolved);
+}
+
 namespace {
 
 // SIGINT or SIGTERM stops the loop before the next step, and so does reaching --stop-at.
-class InterruptWatch : public StepObserver<2> {
+template <int D>
+class InterruptWatch : public StepObserver<D> {
  public:
   explicit InterruptWatch(double stop_at) : stop_at_(stop_at) {}
-  bool before_step(const Simulation<2>& sim) override { return interrupted == 0 && sim.time() < stop_at_; }
+  bool before_step(const Simulation<D>& sim) override { return interrupted == 0 && sim.time() < stop_at_; }
 
  private:
   double stop_at_;
@@ -155,10 +159,11 @@ class InterruptWatch : public StepObserver<2> {
 
 // The state a failed run leaves as its last good snapshot: every `every` steps, before the step, what a snapshot
 // holds (a third of the particles' arrays: a whole copy had been 160 of the bench case's 560 heap bytes a particle).
-class LastGoodState : public StepObserver<2> {
+template <int D>
+class LastGoodState : public StepObserver<D> {
  public:
-  explicit LastGoodState(const Simulation<2>& sim) : snapshot(sim.particles()), time(sim.time()), step(sim.step_count()) {}
-  bool before_step(const Simulation<2>& sim) override {
+  explicit LastGoodState(const Simulation<D>& sim) : snapshot(sim.particles()), time(sim.time()), step(sim.step_count()) {}
+  bool before_step(const Simulation<D>& sim) override {
     if (sim.step_count() % every == 0) {
       snapshot.assign(sim.particles());
       time = sim.time();
@@ -167,19 +172,20 @@ class LastGoodState : public StepObserver<2> {
     return true;
   }
   static constexpr long every = 10;
-  IdOrdered snapshot;
+  IdOrdered<D> snapshot;
   double time;
   long step;
 };
 
 // One progress line on standard error, refreshed every second.
-class ProgressLine : public StepObserver<2> {
+template <int D>
+class ProgressLine : public StepObserver<D> {
  public:
   // Rates and the ETA count from where this loop started (a resumed run's, the checkpoint).
-  ProgressLine(Clock::time_point loop_start, double end_time, const Simulation<2>& sim, std::string label = "")
+  ProgressLine(Clock::time_point loop_start, double end_time, const Simulation<D>& sim, std::string label = "")
       : start_(loop_start), end_(end_time), start_step_(sim.step_count()), start_time_(sim.time()),
         label_(std::move(label)) {}
-  void after_step(Simulation<2>& sim, double dt) override {
+  void after_step(Simulation<D>& sim, double dt) override {
     if (Clock::now() < next_) return;
     next_ = Clock::now() + std::chrono::seconds(1);
     const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
@@ -202,7 +208,8 @@ class ProgressLine : public StepObserver<2> {
 
 // run.json's account of the particles taken out of the run (Simulation::left_the_domain): how many, and the first
 // hundred with when and where.
-json left_the_domain_json(const Simulation<2>& sim) {
+template <int D>
+json left_the_domain_json(const Simulation<D>& sim) {
   const auto& left = sim.left_the_domain();
   json listed = json::array();
   for (std::size_t k = 0; k < std::min<std::size_t>(left.size(), 100); ++k)
@@ -211,39 +218,47 @@ json left_the_domain_json(const Simulation<2>& sim) {
 }
 
 // The completed message's note of them, empty when none left.
-std::string left_the_domain_note(const Simulation<2>& sim) {
+// "(x, y)" or "(x, y, z)": a position for messages.
+std::string position_text(const std::vector<double>& p) {
+  std::string out = "(";
+  for (std::size_t k = 0; k < p.size(); ++k) out += (k ? ", " : "") + fmt::format("{:.6g}", p[k]);
+  return out + ")";
+}
+
+template <int D>
+std::string left_the_domain_note(const Simulation<D>& sim) {
   const auto& left = sim.left_the_domain();
   if (left.empty()) return "";
   const auto& first = left.front();
   return fmt::format("; {} fluid particle{} left the domain through an open side and {} taken out (the first, {}, "
-                     "at t = {:.6g} s at ({:.6g}, {:.6g}); run.json lists them)",
+                     "at t = {:.6g} s at {}; run.json lists them)",
                      left.size(), left.size() == 1 ? "" : "s", left.size() == 1 ? "was" : "were", first.id,
-                     first.time, first.position[0], first.position[1]);
+                     first.time, position_text(first.position));
 }
 
 // A run ready to step: its scene built, its output folder checked, and for a resumed run the checkpoint's state.
+template <int D>
 struct PreparedRun {
-  std::unique_ptr<cases::Scene> scene;  // its start (settling, gates) left to settle_before_the_run
+  std::unique_ptr<cases::Scene<D>> scene;  // its start (settling, gates) left to settle_before_the_run
   std::filesystem::path out;
   CheckpointHeader header;  // what its checkpoints will say
   std::optional<Checkpoint> resumed_from;    // a checkpoint of the run (after t = 0) to continue from
   std::optional<Checkpoint> settling_from;   // a checkpoint taken while the water settled, to settle on from
 };
 
-// A new run: resolve, check the output folder, build (its settling is the run's: settle_before_the_run).
-std::optional<PreparedRun> prepare_new_run(const RunArguments& args) {
-  const auto resolved = resolve_or_report(args);
-  if (!resolved) return std::nullopt;
+// A new run of its resolved scene: check the output folder, build (its settling is the run's: settle_before_the_run).
+template <int D>
+std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const std::optional<YAML::Node>& resolved) {
   // The output folder is checked before anything is built or written (the case's name may come from the scene).
   const std::string name = (*resolved)["name"].as<std::string>();
-  PreparedRun run;
+  PreparedRun<D> run;
   run.out = args.out.empty() ? std::filesystem::path("runs") / (name.empty() ? args.scene.stem().string() : name)
                              : args.out;
   if (const auto why = output_folder_problem(run.out)) {
     std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
     return std::nullopt;
   }
-  run.scene = build_or_report(args, *resolved, cases::StartOfRun::left_to_caller);
+  run.scene = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller);
   if (!run.scene) return std::nullopt;
   run.header = {checkpoint_writer(), std::filesystem::absolute(args.scene).string(), args.overrides,
                 YAML::Dump(*resolved)};
@@ -265,16 +280,12 @@ std::string first_difference(const std::string& a, const std::string& b) {
 
 // A resumed run: the checkpoint's scene (or the one given, which must be the same), built without settling, then the
 // checkpoint's state put back; or, from a checkpoint taken while settling, built to settle on from it. Refusals name
-// why (exit 2).
-std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
-  PreparedRun run;
+// why (exit 2). The checkpoint is read already (read_resumed_checkpoint).
+template <int D>
+std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Checkpoint checkpoint) {
+  PreparedRun<D> run;
   run.out = args.resume;
-  try {
-    run.resumed_from = read_checkpoint(args.resume);
-  } catch (const CheckpointError& e) {
-    std::cerr << "slide: --resume " << args.resume.string() << ": " << e.what() << "; nothing was run or written\n";
-    return std::nullopt;
-  }
+  run.resumed_from = std::move(checkpoint);
   const CheckpointHeader& h = run.resumed_from->header;
   if (h.version != checkpoint_writer()) {
     std::cerr << fmt::format("slide: --resume {}: the checkpoint was written by slide {} and this is slide {}: its "
@@ -301,7 +312,7 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
     }
   }
   try {
-    run.scene = cases::build_scene(cases::load_yaml_text(h.resolved_scene), scene_file.stem().string(),
+    run.scene = cases::build_scene<D>(cases::load_yaml_text(h.resolved_scene), scene_file.stem().string(),
                                    scene_file.parent_path().empty() ? "." : scene_file.parent_path(),
                                    h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled);
   } catch (const cases::YamlTextRefused& e) {
@@ -320,7 +331,8 @@ std::optional<PreparedRun> prepare_resumed_run(const RunArguments& args) {
 }
 
 // checkpoint.bin of the simulation's state at its time and step, with `state` after it; taken while settling or not.
-void write_state_checkpoint(const PreparedRun& run, const Simulation<2>& sim, const StateWriter& state, bool settling) {
+template <int D>
+void write_state_checkpoint(const PreparedRun<D>& run, const Simulation<D>& sim, const StateWriter& state, bool settling) {
   Checkpoint c{run.header, state.bytes()};
   c.header.time = sim.time();
   c.header.step = sim.step_count();
@@ -330,12 +342,13 @@ void write_state_checkpoint(const PreparedRun& run, const Simulation<2>& sim, co
 
 // Writes checkpoint.bin at the scene's interval of simulated time (after the outputs have sampled the step), and on
 // demand (an interrupted run).
-class CheckpointObserver : public StepObserver<2> {
+template <int D>
+class CheckpointObserver : public StepObserver<D> {
  public:
-  CheckpointObserver(const PreparedRun& run, RunOutputs& outputs, const Simulation<2>& sim)
+  CheckpointObserver(const PreparedRun<D>& run, RunOutputs<D>& outputs, const Simulation<D>& sim)
       : run_(run), outputs_(outputs), sim_(sim), interval_(run.scene->output.checkpoint_interval),
         next_(interval_ > 0 ? interval_ : std::numeric_limits<double>::infinity()) {}
-  void after_step(Simulation<2>& sim, double) override {
+  void after_step(Simulation<D>& sim, double) override {
     if (interval_ <= 0.0 || sim.time() < next_ - 1e-12 * std::max(1.0, next_)) return;
     next_ += interval_;
     if (sim.time() >= next_) next_ = sim.time() + interval_;
@@ -352,15 +365,16 @@ class CheckpointObserver : public StepObserver<2> {
   void restore(StateReader& in) { in.get(next_); }
 
  private:
-  const PreparedRun& run_;
-  RunOutputs& outputs_;
-  const Simulation<2>& sim_;
+  const PreparedRun<D>& run_;
+  RunOutputs<D>& outputs_;
+  const Simulation<D>& sim_;
   double interval_, next_;
 };
 
 // A run stopped by a signal while its water settled: a checkpoint of the simulation and the settling (from which
 // --resume settles on, then runs), and run.json saying so. Returns the exit code, 128 + the signal.
-int stop_while_settling(const PreparedRun& run, const Simulation<2>& sim, const Settling& settling) {
+template <int D>
+int stop_while_settling(const PreparedRun<D>& run, const Simulation<D>& sim, const Settling<D>& settling) {
   std::filesystem::create_directories(run.out);
   StateWriter state;
   sim.save_state(state);
@@ -391,14 +405,15 @@ int stop_while_settling(const PreparedRun& run, const Simulation<2>& sim, const 
 // stops it as it stops the run: within a step, with a checkpoint (stop_while_settling). A run resumed from such a
 // checkpoint settles on from it. Then the start is completed (the settled water checked at rest, the gates lifted).
 // Returns an exit code where the run ends here (128 + signal; 2 where the water is refused), nothing where it goes on.
-std::optional<int> settle_before_the_run(PreparedRun& run, const RunArguments& args) {
-  cases::Scene& scene = *run.scene;
-  Simulation<2>& sim = *scene.simulation;
+template <int D>
+std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments& args) {
+  cases::Scene<D>& scene = *run.scene;
+  Simulation<D>& sim = *scene.simulation;
   std::optional<Relaxation> settled;
   const std::string refused = "slide: invalid scene " + (args.scene.empty() ? run.header.scene_file : args.scene.string()) +
                               ": method.initial_state: ";
   if (scene.pending_settling) {
-    Settling settling(sim, *scene.pending_settling);
+    Settling<D> settling(sim, *scene.pending_settling);
     if (run.settling_from) {
       try {
         StateReader in(run.settling_from->state);
@@ -409,9 +424,9 @@ std::optional<int> settle_before_the_run(PreparedRun& run, const RunArguments& a
         return 2;
       }
     }
-    InterruptWatch interrupt(std::numeric_limits<double>::infinity());
-    ProgressLine progress(Clock::now(), settling.duration(), sim, "settling: ");
-    std::vector<StepObserver<2>*> observers{&interrupt};
+    InterruptWatch<D> interrupt(std::numeric_limits<double>::infinity());
+    ProgressLine<D> progress(Clock::now(), settling.duration(), sim, "settling: ");
+    std::vector<StepObserver<D>*> observers{&interrupt};
     if (!args.quiet) observers.push_back(&progress);
     try {
       if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped)
@@ -433,18 +448,12 @@ std::optional<int> settle_before_the_run(PreparedRun& run, const RunArguments& a
   return std::nullopt;
 }
 
-}  // namespace
-
-int run_command(const RunArguments& args) {
-  const auto setup_start = Clock::now();
-  // The program's own memory (code, libraries, runtime) before any scene: what the particles cost is the peak above it.
-  const double resident_bytes_at_start = cases::program_resident_bytes();
-  if (args.threads < 0) {
-    std::cerr << "slide: --threads must be at least 1 (got " << args.threads << ")\n";
-    return 2;
-  }
-  if (args.threads > 0) set_thread_count(args.threads);
-  std::optional<PreparedRun> run = args.resume.empty() ? prepare_new_run(args) : prepare_resumed_run(args);
+// The run of a D-dimensional scene: its resolved scene (a new run) or its checkpoint (a resumed one).
+template <int D>
+int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolved, std::optional<Checkpoint> checkpoint,
+              Clock::time_point setup_start, double resident_bytes_at_start) {
+  std::optional<PreparedRun<D>> run =
+      checkpoint ? prepare_resumed_run<D>(args, std::move(*checkpoint)) : prepare_new_run<D>(args, resolved);
   if (!run) return 2;
   // From here on SIGINT and SIGTERM stop the run where it is, settling or stepping: before the next step, with a
   // checkpoint (exit 128 + signal). While the scene is built they end the process at once, as by default: nothing
@@ -454,7 +463,7 @@ int run_command(const RunArguments& args) {
   using Handler = void (*)(int);
   const Handler previous_sigint = std::signal(SIGINT, on_stop_signal);
   const Handler previous_sigterm = std::signal(SIGTERM, on_stop_signal);
-  const std::unique_ptr<cases::Scene>& scene = run->scene;
+  const std::unique_ptr<cases::Scene<D>>& scene = run->scene;
   const std::filesystem::path& out = run->out;
   auto& sim = *scene->simulation;
   for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
@@ -464,8 +473,8 @@ int run_command(const RunArguments& args) {
   // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
   std::error_code no_checkpoint;
   if (!run->resumed_from) std::filesystem::remove(checkpoint_path(out), no_checkpoint);
-  RunOutputs outputs(*scene, out, run->resumed_from.has_value());
-  CheckpointObserver checkpoints(*run, outputs, sim);
+  RunOutputs<D> outputs(*scene, out, run->resumed_from.has_value());
+  CheckpointObserver<D> checkpoints(*run, outputs, sim);
   if (run->resumed_from) {
     try {
       StateReader in(run->resumed_from->state);
@@ -508,8 +517,8 @@ int run_command(const RunArguments& args) {
                     {"sound_speed", sim.options.sound_speed},
                     {"sound_speed_source", scene->sound_speed_source},
                     {"deepest_water", scene->deepest_water},
-                    {"domain_min", {sim.options.domain_lo[0], sim.options.domain_lo[1]}},
-                    {"domain_max", {sim.options.domain_hi[0], sim.options.domain_hi[1]}}};
+                    {"domain_min", std::vector<double>(sim.options.domain_lo.begin(), sim.options.domain_lo.end())},
+                    {"domain_max", std::vector<double>(sim.options.domain_hi.begin(), sim.options.domain_hi.end())}};
     json limits = json::object();
     for (std::size_t k = 0; k < sim.limit_counts().size(); ++k)
       limits[std::string(to_string(TimeStepLimit(k)))] = sim.limit_counts()[k];
@@ -545,16 +554,16 @@ int run_command(const RunArguments& args) {
   // A write past a file-size limit (ulimit -f) fails with EFBIG instead of killing the process, so that it is
   // reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
-  LastGoodState last_good(sim);
+  LastGoodState<D> last_good(sim);
   try {
     if (!run->resumed_from) outputs.write_initial();
     write_run_json("running", "", json::object());
 
-    InterruptWatch interrupt(args.stop_at);
-    ProgressLine progress(loop_start, scene->end_time, sim);
-    std::vector<StepObserver<2>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
+    InterruptWatch<D> interrupt(args.stop_at);
+    ProgressLine<D> progress(loop_start, scene->end_time, sim);
+    std::vector<StepObserver<D>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
     if (!args.quiet) observers.push_back(&progress);
-    const AdvanceResult result = advance<2>(sim, scene->end_time, observers);
+    const AdvanceResult result = advance<D>(sim, scene->end_time, observers);
     std::signal(SIGINT, previous_sigint);
     std::signal(SIGTERM, previous_sigterm);
 
@@ -576,8 +585,7 @@ int run_command(const RunArguments& args) {
     if (const auto& bad = result.instability) {
       outputs.write_snapshot(last_good.snapshot, last_good.time, last_good.step);
       outputs.flush();
-      const std::string where =
-          bad->position.size() >= 2 ? fmt::format("({:.6g}, {:.6g})", bad->position[0], bad->position[1]) : "";
+      const std::string where = bad->position.size() >= 2 ? position_text(bad->position) : "";
       const std::string msg = fmt::format(
           "unstable at t = {:.6g} s (step {}): particle {} at {}: {}; last good snapshot: t = {:.6g} s (step {})",
           bad->time, bad->step, bad->particle, where, bad->reason, last_good.time, last_good.step);
@@ -624,6 +632,40 @@ int run_command(const RunArguments& args) {
     }
     return 1;
   }
+}
+
+}  // namespace
+
+int run_command(const RunArguments& args) {
+  const auto setup_start = Clock::now();
+  // The program's own memory (code, libraries, runtime) before any scene: what the particles cost is the peak above it.
+  const double resident_bytes_at_start = cases::program_resident_bytes();
+  if (args.threads < 0) {
+    std::cerr << "slide: --threads must be at least 1 (got " << args.threads << ")\n";
+    return 2;
+  }
+  if (args.threads > 0) set_thread_count(args.threads);
+  // The scene's dimension decides which simulation runs: from the scene file, or from the checkpoint's scene.
+  std::optional<YAML::Node> resolved;
+  std::optional<Checkpoint> checkpoint;
+  int dimension = 2;
+  if (args.resume.empty()) {
+    resolved = resolve_or_report(args);
+    if (!resolved) return 2;
+    dimension = cases::scene_dimension(*resolved);
+  } else {
+    try {
+      checkpoint = read_checkpoint(args.resume);
+      dimension = cases::scene_dimension(cases::load_yaml_text(checkpoint->header.resolved_scene));
+    } catch (const CheckpointError& e) {
+      std::cerr << "slide: --resume " << args.resume.string() << ": " << e.what() << "; nothing was run or written\n";
+      return 2;
+    } catch (const std::exception&) {
+      dimension = 2;  // a scene the checkpoint cannot give back: prepare_resumed_run says why
+    }
+  }
+  return dimension == 3 ? run_scene<3>(args, resolved, std::move(checkpoint), setup_start, resident_bytes_at_start)
+                        : run_scene<2>(args, resolved, std::move(checkpoint), setup_start, resident_bytes_at_start);
 }
 
 }  // namespace slide::tools

@@ -14,16 +14,17 @@
 
 namespace slide::tools {
 
-void IdOrdered::assign(const Particles<2>& P) {
+template <int D>
+void IdOrdered<D>::assign(const Particles<D>& P) {
   const std::size_t n = P.real_count();  // periodic ghosts are images, not particles of their own
-  for (auto* v : {&position, &velocity}) v->resize(2 * n);
+  for (auto* v : {&position, &velocity}) v->resize(D * n);
   for (auto* v : {&pressure, &number_density, &density}) v->resize(n);
   for (auto* v : {&phase, &kind}) v->resize(n);
   id.resize(n);
   const auto put = [&](std::size_t slot, std::size_t i) {
-    for (int d = 0; d < 2; ++d) {
-      position[2 * slot + d] = P.position[i][d];
-      velocity[2 * slot + d] = P.velocity[i][d];
+    for (int d = 0; d < D; ++d) {
+      position[D * slot + d] = P.position[i][d];
+      velocity[D * slot + d] = P.velocity[i][d];
     }
     pressure[slot] = P.pressure[i];
     number_density[slot] = P.number_density[i];
@@ -48,6 +49,15 @@ void IdOrdered::assign(const Particles<2>& P) {
 
 namespace {
 
+// A gauge's point in the plan, at height 0 (the gauge scans the vertical through it).
+template <int D>
+Vec<D> gauge_point(const cases::GaugeSpec& g) {
+  Vec<D> p = Vec<D>::Zero();
+  p[0] = g.x;
+  if constexpr (D == 3) p[1] = g.y;
+  return p;
+}
+
 // The next time of a periodic sample after one taken now: one interval on, or from now if the run jumped past it.
 double next_after(double next, double interval, double now) {
   next += interval;
@@ -55,7 +65,8 @@ double next_after(double next, double interval, double now) {
 }
 
 // "0 fluid, 1 wall, 2 dummy" and "0 water, 1 sediment": what the snapshots' codes stand for.
-SnapshotLegend snapshot_legend(const Simulation<2>& sim) {
+template <int D>
+SnapshotLegend snapshot_legend(const Simulation<D>& sim) {
   SnapshotLegend legend;
   for (const auto& [kind, name] : kind_names.entries)
     legend.kind_codes += fmt::format("{}{} {}", legend.kind_codes.empty() ? "" : ", ", static_cast<int>(kind), name);
@@ -67,7 +78,8 @@ SnapshotLegend snapshot_legend(const Simulation<2>& sim) {
 
 }  // namespace
 
-RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& out, bool resuming)
+template <int D>
+RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming)
     : scene_(scene), sim_(*scene.simulation) {
   if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_), !resuming);
   if (sim_.bodies())
@@ -106,26 +118,35 @@ RunOutputs::RunOutputs(const cases::Scene& scene, const std::filesystem::path& o
   next_body_sample_ = scene.body_sample_interval;
 }
 
-void RunOutputs::write_snapshot(const Particles<2>& P, double time, long step) {
-  if (snapshots_) snapshots_->write(time, step, IdOrdered(P).fields());
+template <int D>
+void RunOutputs<D>::write_snapshot(const Particles<D>& P, double time, long step) {
+  if (snapshots_) snapshots_->write(time, step, IdOrdered<D>(P).fields());
 }
 
-void RunOutputs::write_snapshot(const IdOrdered& snapshot, double time, long step) {
+template <int D>
+void RunOutputs<D>::write_snapshot(const IdOrdered<D>& snapshot, double time, long step) {
   if (snapshots_) snapshots_->write(time, step, snapshot.fields());
 }
 
 // Gauges, the surge front and the velocity profile.
-void RunOutputs::sample() {
+template <int D>
+void RunOutputs<D>::sample() {
   last_sample_time_ = sim_.time();
   sample_slides();
   if (gauges_) {
     std::vector<double> row{sim_.time()};
-    for (const auto& g : scene_.gauges) row.push_back(free_surface_elevation<2>(sim_, Vec<2>(g.x, 0.0)));
+    for (const auto& g : scene_.gauges) row.push_back(free_surface_elevation<D>(sim_, gauge_point<D>(g)));
     gauges_->add_row(row);
   }
+  if constexpr (D == 2) sample_flume_diagnostics();
+}
+
+// The 2-D flume's diagnostics: the dam break's surge front and the velocity profile across the flow.
+template <int D>
+void RunOutputs<D>::sample_flume_diagnostics() {
   if (front_) {
     const auto& sf = scene_.surge_front;
-    const SurgeFront f = measure_surge_front<2>(sim_, sf.wall_face_x, sf.floor_y, 0.25 * sf.column_width);
+    const SurgeFront f = measure_surge_front<D>(sim_, sf.wall_face_x, sf.floor_y, 0.25 * sf.column_width);
     const double a = sf.column_width, g = -sim_.options.gravity[1];
     const double T = a > 0 ? sim_.time() * std::sqrt(2.0 * g / a) : NAN;
     front_->add_row({sim_.time(), f.front, f.wall_height, T, a > 0 ? f.front / a : NAN,
@@ -133,13 +154,14 @@ void RunOutputs::sample() {
   }
   if (velocity_profile_) {
     const auto& vp = scene_.velocity_profile;
-    for (const auto& r : velocity_profile<2>(sim_, vp.y_origin, vp.bin))
+    for (const auto& r : velocity_profile<D>(sim_, vp.y_origin, vp.bin))
       velocity_profile_->add_row({sim_.time(), r.y, r.u, r.v, double(r.particles)});
   }
 }
 
 // Forces in bodies.csv are means over the interval since the previous row (the momentum received / time).
-void RunOutputs::sample_bodies() {
+template <int D>
+void RunOutputs<D>::sample_bodies() {
   const auto& bodies = sim_.bodies();
   if (!bodies) return;
   last_body_sample_time_ = sim_.time();
@@ -156,83 +178,99 @@ void RunOutputs::sample_bodies() {
 }
 
 // Each profile is taken at the first step at or after its time.
-void RunOutputs::sample_profiles() {
-  const auto& ps = scene_.profiles;
-  while (profiles_ && next_profile_ < ps.times.size() && sim_.time() >= ps.times[next_profile_] - 1e-12) {
-    const long n = std::lround((ps.x_max - ps.x_min) / ps.spacing);
-    for (long k = 0; k <= n; ++k) {
-      const double x = ps.x_min + (ps.x_max - ps.x_min) * k / std::max(1L, n);
-      profiles_->add_row({sim_.time(), x, free_surface_elevation<2>(sim_, Vec<2>(x, 0.0))});
+template <int D>
+void RunOutputs<D>::sample_profiles() {
+  if constexpr (D == 2) {  // 2-D scenes only so far
+    const auto& ps = scene_.profiles;
+    while (profiles_ && next_profile_ < ps.times.size() && sim_.time() >= ps.times[next_profile_] - 1e-12) {
+      const long n = std::lround((ps.x_max - ps.x_min) / ps.spacing);
+      for (long k = 0; k <= n; ++k) {
+        const double x = ps.x_min + (ps.x_max - ps.x_min) * k / std::max(1L, n);
+        profiles_->add_row({sim_.time(), x, free_surface_elevation<2>(sim_, Vec<2>(x, 0.0))});
+      }
+      ++next_profile_;
     }
-    ++next_profile_;
   }
 }
 
 // Each deformable slide's front (the particle furthest along its front direction, and how far along that is), its
 // largest thickness over columns of width 2 dp, and its particle count (coupling/slide_front.hpp).
-void RunOutputs::sample_slides() {
-  if (!slide_front_) return;
-  const double dp = sim_.options.dp;
-  for (const auto& s : scene_.slides) {
-    const SlideFront f = measure_slide_front(sim_.particles(), s.phase, s.front_direction, dp, 2.0 * dp);
-    const double row[] = {f.front[0], f.front[1], s.front_direction.dot(f.front), f.thickness_max,
-                          double(f.particles)};
-    slide_front_->add_labelled_row(sim_.time(), s.name, row);
+template <int D>
+void RunOutputs<D>::sample_slides() {
+  if constexpr (D == 2) {  // 2-D scenes only so far
+    if (!slide_front_) return;
+    const double dp = sim_.options.dp;
+    for (const auto& s : scene_.slides) {
+      const SlideFront f = measure_slide_front(sim_.particles(), s.phase, s.front_direction, dp, 2.0 * dp);
+      const double row[] = {f.front[0], f.front[1], s.front_direction.dot(f.front), f.thickness_max,
+                            double(f.particles)};
+      slide_front_->add_labelled_row(sim_.time(), s.name, row);
+    }
   }
 }
 
 // Every slide's upper surface now, in columns of 2 dp (coupling/slide_front.hpp), and its front: the deformable slides'
 // from their particles, then the rigid bodies' from their outlines.
-std::vector<std::pair<std::string, RunOutputs::ModelSurface>> RunOutputs::model_surfaces() const {
-  const double dp = sim_.options.dp, width = 2.0 * dp;
+template <int D>
+std::vector<std::pair<std::string, typename RunOutputs<D>::ModelSurface>> RunOutputs<D>::model_surfaces() const {
   std::vector<std::pair<std::string, ModelSurface>> out;
-  for (const auto& s : scene_.slides) {
-    const SlideFront f = measure_slide_front(sim_.particles(), s.phase, Vec<2>(1.0, 0.0), dp, width);
-    out.push_back({s.name, {slide_upper_surface(sim_.particles(), s.phase, dp, width), f.front[0] + 0.5 * dp}});
-  }
-  if (const auto& bodies = sim_.bodies())
-    for (std::size_t b = 0; b < bodies->size(); ++b) {
-      const std::vector<Vec<2>> outline = bodies->outline_now(int(b));
-      double front = -std::numeric_limits<double>::infinity();
-      for (const auto& v : outline) front = std::max(front, v[0]);
-      out.push_back({bodies->names[b], {polygon_upper_surface(outline, width), front}});
+  if constexpr (D == 2) {  // 2-D scenes only so far
+    const double dp = sim_.options.dp, width = 2.0 * dp;
+    for (const auto& s : scene_.slides) {
+      const SlideFront f = measure_slide_front(sim_.particles(), s.phase, Vec<2>(1.0, 0.0), dp, width);
+      out.push_back({s.name, {slide_upper_surface(sim_.particles(), s.phase, dp, width), f.front[0] + 0.5 * dp}});
     }
+    if (const auto& bodies = sim_.bodies())
+      for (std::size_t b = 0; b < bodies->size(); ++b) {
+        const std::vector<Vec<2>> outline = bodies->outline_now(int(b));
+        double front = -std::numeric_limits<double>::infinity();
+        for (const auto& v : outline) front = std::max(front, v[0]);
+        out.push_back({bodies->names[b], {polygon_upper_surface(outline, width), front}});
+      }
+  }
   return out;
 }
 
 // The slides' upper surfaces at the scene's outline times (the first step at or after each).
-void RunOutputs::sample_slide_outlines() {
-  const auto& times = scene_.slide_outline_times;
-  while (slide_outline_ && next_outline_ < times.size() && sim_.time() >= times[next_outline_] - 1e-12) {
-    for (const auto& [name, m] : model_surfaces())
-      for (const auto& p : m.surface) {
-        const double row[] = {p[0], p[1]};
-        slide_outline_->add_labelled_row(sim_.time(), name, row);
-      }
-    ++next_outline_;
+template <int D>
+void RunOutputs<D>::sample_slide_outlines() {
+  if constexpr (D == 2) {  // 2-D scenes only so far
+    const auto& times = scene_.slide_outline_times;
+    while (slide_outline_ && next_outline_ < times.size() && sim_.time() >= times[next_outline_] - 1e-12) {
+      for (const auto& [name, m] : model_surfaces())
+        for (const auto& p : m.surface) {
+          const double row[] = {p[0], p[1]};
+          slide_outline_->add_labelled_row(sim_.time(), name, row);
+        }
+      ++next_outline_;
+    }
   }
 }
 
 // The first slide's (or, without deformable slides, the first body's) shape against the measured one at each measured
 // time plus the offset (the first step at or after it; coupling/slide_shape_error.hpp).
-void RunOutputs::sample_slide_shapes() {
-  if (!slide_shapes_) return;
-  const auto& spec = *scene_.slide_shapes;
-  const double front_at_start = upper_envelope(spec.shapes.front().points).back()[0];
-  while (next_shape_ < spec.shapes.size() &&
-         sim_.time() >= spec.shapes[next_shape_].time_measured + spec.time_offset - 1e-12) {
-    const auto surfaces = model_surfaces();
-    const auto& [name, m] = surfaces.front();
-    const auto& shape = spec.shapes[next_shape_];
-    const SlideShapeError e = slide_shape_error(shape.points, front_at_start, m.surface, m.front);
-    const double row[] = {shape.time_measured, e.front_measured, e.front_model,        e.travel_measured,
-                          e.front_error_percent, e.surface_rms_m, double(e.compared)};
-    slide_shapes_->add_labelled_row(sim_.time(), name, row);
-    ++next_shape_;
+template <int D>
+void RunOutputs<D>::sample_slide_shapes() {
+  if constexpr (D == 2) {  // 2-D scenes only so far
+    if (!slide_shapes_) return;
+    const auto& spec = *scene_.slide_shapes;
+    const double front_at_start = upper_envelope(spec.shapes.front().points).back()[0];
+    while (next_shape_ < spec.shapes.size() &&
+           sim_.time() >= spec.shapes[next_shape_].time_measured + spec.time_offset - 1e-12) {
+      const auto surfaces = model_surfaces();
+      const auto& [name, m] = surfaces.front();
+      const auto& shape = spec.shapes[next_shape_];
+      const SlideShapeError e = slide_shape_error(shape.points, front_at_start, m.surface, m.front);
+      const double row[] = {shape.time_measured, e.front_measured, e.front_model,        e.travel_measured,
+                            e.front_error_percent, e.surface_rms_m, double(e.compared)};
+      slide_shapes_->add_labelled_row(sim_.time(), name, row);
+      ++next_shape_;
+    }
   }
 }
 
-void RunOutputs::flush() {
+template <int D>
+void RunOutputs<D>::flush() {
   if (slide_front_) slide_front_->flush();
   if (slide_outline_) slide_outline_->flush();
   if (slide_shapes_) slide_shapes_->flush();
@@ -243,7 +281,8 @@ void RunOutputs::flush() {
   if (velocity_profile_) velocity_profile_->flush();
 }
 
-void RunOutputs::write_initial() {
+template <int D>
+void RunOutputs<D>::write_initial() {
   write_snapshot(sim_.particles(), sim_.time(), sim_.step_count());
   sample();
   sample_bodies();
@@ -253,7 +292,8 @@ void RunOutputs::write_initial() {
   flush();
 }
 
-void RunOutputs::after_step(Simulation<2>& sim, double) {
+template <int D>
+void RunOutputs<D>::after_step(Simulation<D>& sim, double) {
   const double t = sim.time();
   if (t >= next_sample_ - eps_) {
     sample();
@@ -273,7 +313,8 @@ void RunOutputs::after_step(Simulation<2>& sim, double) {
   }
 }
 
-void RunOutputs::write_final() {
+template <int D>
+void RunOutputs<D>::write_final() {
   const double interval = scene_.output.snapshot_interval;
   const double t = sim_.time();
   if (snapshots_ && (snapshots_->count() == 0 || interval <= 0 || t > next_snapshot_ - interval + eps_))
@@ -284,20 +325,22 @@ void RunOutputs::write_final() {
 }
 
 // Every table, in one fixed order (the checkpoint's), each whether or not this scene writes it.
+template <int D>
 template <class F>
-void RunOutputs::for_each_csv(F&& f) {
+void RunOutputs<D>::for_each_csv(F&& f) {
   for (auto* csv : {&gauges_, &front_, &velocity_profile_, &bodies_, &profiles_, &slide_front_, &slide_outline_,
                     &slide_shapes_})
     f(*csv);
 }
 
-void RunOutputs::save_state(StateWriter& out) const {
+template <int D>
+void RunOutputs<D>::save_state(StateWriter& out) const {
   for (double t : {eps_, next_snapshot_, next_sample_, next_body_sample_, last_sample_time_, last_body_sample_time_})
     out.put(t);
   out.put<std::uint64_t>(next_profile_);
   out.put<std::uint64_t>(next_outline_);
   out.put<std::uint64_t>(next_shape_);
-  const_cast<RunOutputs*>(this)->for_each_csv([&](const std::optional<CsvWriter>& csv) {
+  const_cast<RunOutputs<D>*>(this)->for_each_csv([&](const std::optional<CsvWriter>& csv) {
     out.put(csv.has_value());
     if (csv) {
       out.put<std::uint64_t>(csv->text().size());
@@ -315,7 +358,8 @@ void RunOutputs::save_state(StateWriter& out) const {
   }
 }
 
-void RunOutputs::restore_state(StateReader& in) {
+template <int D>
+void RunOutputs<D>::restore_state(StateReader& in) {
   for (double* t : {&eps_, &next_snapshot_, &next_sample_, &next_body_sample_, &last_sample_time_, &last_body_sample_time_})
     in.get(*t);
   next_profile_ = in.get<std::uint64_t>();
@@ -338,5 +382,10 @@ void RunOutputs::restore_state(StateReader& in) {
     snapshots_->continue_series(std::move(entries));
   }
 }
+
+template struct IdOrdered<2>;
+template struct IdOrdered<3>;
+template class RunOutputs<2>;
+template class RunOutputs<3>;
 
 }  // namespace slide::tools

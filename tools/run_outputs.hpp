@@ -15,31 +15,34 @@ namespace slide::tools {
 
 // Particle data copied in id order, the order every snapshot uses: the real particles only (periodic ghosts,
 // fluid/periodic.hpp, are left out), whose ids are below id_end(), with gaps where particles left the domain.
+template <int D>
 struct IdOrdered {
   std::vector<double> position, velocity, pressure, number_density, density;
   std::vector<std::uint8_t> phase, kind;
   std::vector<std::uint32_t> id;
 
   IdOrdered() = default;
-  explicit IdOrdered(const Particles<2>& P) { assign(P); }
+  explicit IdOrdered(const Particles<D>& P) { assign(P); }
   // Refills from P, reusing the arrays' storage (the last good state takes one every few steps).
-  void assign(const Particles<2>& P);
-  SnapshotFields fields() const { return {2, position, velocity, pressure, number_density, density, phase, kind, id}; }
+  void assign(const Particles<D>& P);
+  SnapshotFields fields() const { return {D, position, velocity, pressure, number_density, density, phase, kind, id}; }
 };
 
-class RunOutputs : public StepObserver<2> {
+// The 2-D-only outputs (bodies, slides, surge front, profiles) are absent from 3-D scenes so far.
+template <int D>
+class RunOutputs : public StepObserver<D> {
  public:
   // resuming: the outputs continue those in `out` (restore_state), rather than starting afresh.
-  RunOutputs(const cases::Scene& scene, const std::filesystem::path& out, bool resuming = false);
+  RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming = false);
 
   // Writes the initial state (snapshot and first samples) and flushes.
   void write_initial();
-  void after_step(Simulation<2>& sim, double dt) override;
+  void after_step(Simulation<D>& sim, double dt) override;
   // At the end of a completed run: the final snapshot and samples not yet taken.
   void write_final();
 
-  void write_snapshot(const Particles<2>& P, double time, long step);
-  void write_snapshot(const IdOrdered& snapshot, double time, long step);
+  void write_snapshot(const Particles<D>& P, double time, long step);
+  void write_snapshot(const IdOrdered<D>& snapshot, double time, long step);
   void flush();
   std::size_t snapshot_count() const { return snapshots_ ? snapshots_->count() : 0; }
   // The time of the last snapshot written (-infinity before the first, or without snapshots).
@@ -55,6 +58,7 @@ class RunOutputs : public StepObserver<2> {
 
  private:
   void sample();
+  void sample_flume_diagnostics();
   void sample_bodies();
   void sample_profiles();
   void sample_slides();
@@ -68,8 +72,8 @@ class RunOutputs : public StepObserver<2> {
   template <class F>
   void for_each_csv(F&& f);
 
-  const cases::Scene& scene_;
-  const Simulation<2>& sim_;
+  const cases::Scene<D>& scene_;
+  const Simulation<D>& sim_;
   std::optional<SnapshotWriter> snapshots_;
   std::optional<CsvWriter> gauges_, front_, velocity_profile_, bodies_, profiles_, slide_front_, slide_outline_,
       slide_shapes_;
@@ -82,5 +86,10 @@ class RunOutputs : public StepObserver<2> {
   double last_sample_time_ = -std::numeric_limits<double>::infinity();
   double last_body_sample_time_ = -std::numeric_limits<double>::infinity();
 };
+
+extern template struct IdOrdered<2>;
+extern template struct IdOrdered<3>;
+extern template class RunOutputs<2>;
+extern template class RunOutputs<3>;
 
 }  // namespace slide::tools

@@ -83,7 +83,7 @@ int run_main(int argc, char** argv) {
     return 2;
   }
   if (app.got_subcommand("schema")) {
-    std::cout << slide::cases::scene_schema().document("slide scene reference");
+    std::cout << slide::cases::scene_reference();
     return 0;
   }
   if (app.got_subcommand("check")) {

@@ -1,0 +1,149 @@
+// Steps of a 3-D scene's geometry (dimension: 3): its walls (tanks: fluid/box_walls.hpp), its fluid regions (box,
+// below_level inside the tanks) on the simple cubic lattice, and its particle count estimated before any is made.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+#include "cases/scene_build.hpp"
+#include "fluid/box_walls.hpp"
+
+namespace slide::cases {
+namespace {
+
+// Walls on the fcc lattice are cut to the depth re (layers must stay 0: check_lattice_choices).
+int tank_layers(const SceneBuild<3>& b, const YAML::Node& wn) {
+  const long key = wn["layers"].as<long>();
+  return key == 0 ? boundary_layers(b.sim->options.re_over_dp) : static_cast<int>(key);
+}
+
+// A lattice point's index, the key that tells two walls' points at the same place apart from neighbours.
+std::tuple<long, long, long> lattice_index(const Vec<3>& p, double spacing) {
+  return {std::lround(p[0] / spacing - 0.5), std::lround(p[1] / spacing - 0.5), std::lround(p[2] / spacing - 0.5)};
+}
+
+// Whether a lattice point p belongs to the box [lo, hi], by the 2-D rules: on the square lattice its cell lies inside
+// (within a billionth of dp); on the fcc lattice, whose walls are cut from the same lattice, its centre lies strictly
+// inside (a point on a face is the wall's).
+bool in_box(LatticeKind kind, const Vec<3>& p, const Vec<3>& lo, const Vec<3>& hi, double dp) {
+  const double e = 1e-9 * dp, half = kind == LatticeKind::square ? 0.5 * dp : 0.0;
+  const double slack = kind == LatticeKind::square ? e : -e;
+  for (int a = 0; a < 3; ++a)
+    if (p[a] - half < lo[a] - slack || p[a] + half > hi[a] + slack) return false;
+  return true;
+}
+
+}  // namespace
+
+// Boundary particles of the first phase's density, as in 2-D; a point already placed by an earlier wall (where two
+// tanks meet) is left out.
+void build_walls(SceneBuild<3>& b) {
+  Particles<3>& P = b.particles();
+  const auto& first_phase = b.phases.phases[0];
+  std::set<std::tuple<long, long, long>> placed;
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
+    const auto wn = b.r["walls"][w];
+    const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
+    std::vector<BoundaryPointOf<3>> pts;
+    try {
+      const FluidOptions<3>& opt = b.sim->options;
+      pts = tank_boundary(opt.lattice, lo, hi, b.dp, tank_layers(b, wn), opt.re_over_dp * b.dp);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(fmt::format("walls[{}].max", w), e.what());
+    }
+    std::erase_if(pts, [&](const BoundaryPointOf<3>& p) { return !b.in_period(p.position[0]); });
+    for (const auto& bp : pts) {
+      if (!placed.insert(lattice_index(bp.position, row_spacing(b.sim->options.lattice, b.dp))).second) continue;
+      const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
+                                  first_phase.viscosity);
+      P.wall_normal[i] = bp.normal;
+      P.wall_depth[i] = bp.depth;
+      b.boundary_owner.push_back(fmt::format("walls[{}]", w));
+    }
+    b.tanks.push_back({lo, hi});
+  }
+}
+
+// box: the particles whose cell lies inside [min, max]; below_level: those whose cell lies inside a tank, with their
+// centre below the level (which raises the still-water level to it).
+void fill_fluid_regions(SceneBuild<3>& b) {
+  Particles<3>& P = b.particles();
+  b.boundary_count = P.size();
+  const double dp = b.dp;
+  const LatticeKind kind = b.sim->options.lattice;
+  for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
+    const auto rn = b.r["fluid"]["regions"][k];
+    const std::string path = fmt::format("fluid.regions[{}]", k);
+    const std::size_t ph = b.phases.find(rn["phase"].as<std::string>(), path + ".phase");
+    const auto& phase = b.phases.phases[ph];
+    std::size_t added = 0;
+    auto take = [&](const Vec<3>& p, bool inside) {
+      if (!inside || !b.in_period(p[0])) return;
+      P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
+      b.fluid_owner.push_back(path);
+      ++added;
+    };
+    if (rn["type"].as<std::string>() == "box") {
+      const Vec<3> lo = vec_of<3>(rn["min"]), hi = vec_of<3>(rn["max"]);
+      for (int a = 0; a < 3; ++a)
+        if (!(lo[a] < hi[a])) throw SceneError(path + ".max", "must exceed min in x, y and z");
+      for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<3>& p) { take(p, in_box(kind, p, lo, hi, dp)); });
+    } else {
+      if (b.tanks.empty()) throw SceneError(path, "a below_level region needs a tank around it");
+      const double level = rn["level"].as<double>();
+      b.still_level = std::max(b.still_level, level);
+      for (const auto& [lo, hi] : b.tanks) {
+        Vec<3> top = hi;
+        top[2] = std::min(hi[2], level);
+        // The tank's inside, open above, by the lattice's rule.
+        const auto in_tank = [&](const Vec<3>& p, const Vec<3>& t_lo, const Vec<3>& t_hi) {
+          Vec<3> open_hi = t_hi;
+          open_hi[2] = INFINITY;
+          return in_box(kind, p, t_lo, open_hi, dp);
+        };
+        for_each_lattice_point(kind, dp, lo, top, [&](const Vec<3>& p) {
+          bool earlier = false;  // inside a tank already filled (tanks that overlap)
+          for (const auto& t : b.tanks) {
+            if (&t[0] == &lo) break;
+            earlier = earlier || in_tank(p, t[0], t[1]);
+          }
+          take(p, p[2] < level && in_tank(p, lo, hi) && !earlier);
+        });
+      }
+    }
+    if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", dp));
+  }
+  if (P.size() == b.boundary_count) throw SceneError("fluid.regions", "expected at least 1 item");
+  b.lo = b.hi = P.position[0];
+  for (const auto& x : P.position) b.lo = b.lo.cwiseMin(x), b.hi = b.hi.cwiseMax(x);
+}
+
+// Regions: their volume; below_level water: each tank's floor area times the depth below the level; tanks: their floor
+// and sides' area times their layers' thickness.
+double estimated_particles(const SceneBuild<3>& b) {
+  const double dp = b.dp, cell = dp * dp * dp;
+  double n = 0.0, level = -INFINITY;
+  for (const auto& rn : b.r["fluid"]["regions"]) {
+    if (rn["type"].as<std::string>() == "box") {
+      const Vec<3> size = (vec_of<3>(rn["max"]) - vec_of<3>(rn["min"])).cwiseMax(0.0);
+      n += size.prod() / cell;
+    } else {
+      level = std::max(level, rn["level"].as<double>());
+    }
+  }
+  for (const auto& wn : b.r["walls"]) {
+    const Vec<3> size = (vec_of<3>(wn["max"]) - vec_of<3>(wn["min"])).cwiseMax(0.0);
+    const long layers_key = wn["layers"].as<long>();
+    const double t = dp * (layers_key == 0 ? boundary_layers(b.sim->options.re_over_dp) : layers_key);
+    const double floor = (size[0] + 2 * t) * (size[1] + 2 * t) * t;
+    const double sides = 2.0 * (size[0] + size[1] + 4 * t) * t * size[2];
+    n += (floor + sides) / cell;
+    if (std::isfinite(level))
+      n += size[0] * size[1] * std::clamp(level - wn["min"][2].as<double>(), 0.0, size[2]) / cell;
+  }
+  return n;
+}
+
+}  // namespace slide::cases

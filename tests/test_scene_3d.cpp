@@ -1,0 +1,77 @@
+// 3-D scenes (dimension: 3): what they build, counted by hand, and what they refuse, naming the key.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cases/scene.hpp"
+
+namespace slide::cases {
+namespace {
+
+std::string tank_scene(const std::string& lattice, const std::string& extra = "") {
+  return "dimension: 3\n"
+         "particle_spacing: 0.01\n"
+         "lattice: " + lattice + "\n"
+         "end_time: 0.01\n"
+         "method: {initial_state: lattice}\n"
+         "fluid:\n"
+         "  phases: [{name: water, density: 1000}]\n"
+         "  regions: [{type: below_level, level: 0.1}]\n"
+         "walls: [{type: tank, min: [0, 0, 0], max: [0.1, 0.1, 0.2]}]\n"
+         "gauges: [{name: centre, x: 0.05, y: 0.05}]\n" + extra;
+}
+
+std::string refusal_key(const std::string& text) {
+  try {
+    const YAML::Node r = load_scene_text(text, {});
+    build_scene<3>(r, "s");
+  } catch (const SceneError& e) {
+    return e.key_path;
+  }
+  return "(accepted)";
+}
+
+// The cubic lattice: 10 x 10 cells across, 10 below the level; walls of 3 layers (re = 2.1 dp) around them.
+TEST(Scene3D, CubicTankBuildsItsWaterAndWallsAsCountedByHand) {
+  const auto scene = build_scene<3>(load_scene_text(tank_scene("square"), {}), "s");
+  EXPECT_EQ(scene->fluid_count, 1000u);
+  EXPECT_EQ(scene->wall_count + scene->dummy_count, std::size_t(16 * 16 * 3 + (16 * 16 - 10 * 10) * 20));
+  ASSERT_EQ(scene->gauges.size(), 1u);
+  EXPECT_EQ(scene->gauges[0].y, 0.05);
+  EXPECT_EQ(scene->simulation->options.gravity, Vec<3>(0, 0, -9.81));  // the 3-D default: along -z
+  EXPECT_EQ(scene->resolved["lattice"].as<std::string>(), "square");
+}
+
+// The fcc lattice: the points s (i + 1/2, j + 1/2, k + 1/2), s = 0.7937 dp, i + j + k even, strictly inside the tank
+// and below the level: i, j, k from 0 to 12 (12.5 s = 0.0992 m), half of the 13^3 (the even ones: (13^3 + 1) / 2).
+TEST(Scene3D, FccTankHoldsTheLatticePointsInsideIt) {
+  const auto scene = build_scene<3>(load_scene_text(tank_scene("fcc"), {}), "s");
+  EXPECT_EQ(scene->fluid_count, std::size_t((13 * 13 * 13 + 1) / 2));
+  // No water point within half a nearest spacing of a wall point: the lattice runs on through the walls.
+  const auto& P = scene->simulation->particles();
+  double closest = 1e9;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (std::size_t j = 0; j < P.size(); ++j)
+      if (P.kind[i] == Kind::fluid && P.kind[j] != Kind::fluid) closest = std::min(closest, (P.position[i] - P.position[j]).norm());
+  EXPECT_NEAR(closest, nearest_spacing(LatticeKind::fcc, 0.01), 1e-12);
+}
+
+TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
+  EXPECT_EQ(refusal_key(tank_scene("square", "bodies: []\n")), "bodies");
+  EXPECT_EQ(refusal_key(tank_scene("square", "gravity: [0, -9.81]\n")), "gravity");
+  EXPECT_EQ(refusal_key(tank_scene("hexagonal")), "lattice");
+  EXPECT_EQ(refusal_key(tank_scene("square") + "profiles: {times: [0.1]}\n"), "profiles");
+  std::string four = tank_scene("square");
+  four.replace(four.find("dimension: 3"), 12, "dimension: 4");
+  EXPECT_EQ(refusal_key(four), "dimension");
+  // A 2-D scene given to the 3-D builder.
+  try {
+    build_scene<2>(load_scene_text(tank_scene("square"), {}), "s");
+    ADD_FAILURE() << "a 3-D scene built as 2-D";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key_path, "dimension");
+  }
+}
+
+}  // namespace
+}  // namespace slide::cases
