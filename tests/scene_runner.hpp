@@ -3,7 +3,10 @@
 // output files hold.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
+#include <limits>
+#include <type_traits>
 
 #include "cases/scene.hpp"
 #include "coupling/advance.hpp"
@@ -20,16 +23,19 @@ inline std::unique_ptr<cases::Scene<2>> build_scene_text(const std::string& name
   return cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), name);
 }
 
-inline std::unique_ptr<cases::Scene<2>> load_shipped_scene(const std::string& name,
-                                                        const std::vector<std::string>& overrides = {}) {
-  return cases::build_scene<2>(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");
+template <int D = 2>
+std::unique_ptr<cases::Scene<D>> load_shipped_scene(const std::string& name, const std::vector<std::string>& overrides = {}) {
+  return cases::build_scene<D>(cases::load_scene(source_dir() / "cases" / name, overrides), name, source_dir() / "cases");
 }
 
-// Steps to the scene's end time with the one step loop (coupling/advance.hpp); returns false (with a test failure)
+// Steps to the scene's end time (or end_time) with the one step loop (coupling/advance.hpp); returns false (with a test failure)
 // if the run goes unstable.
-inline bool run_scene(cases::Scene<2>& scene, const std::function<void(const Simulation<2>&)>& after_step) {
-  AfterEveryStep<2, std::function<void(const Simulation<2>&)>> observer(after_step);
-  const AdvanceResult result = advance<2>(*scene.simulation, scene.end_time, {&observer});
+template <int D>
+bool run_scene(cases::Scene<D>& scene, const std::type_identity_t<std::function<void(const Simulation<D>&)>>& after_step,
+               double end_time = std::numeric_limits<double>::quiet_NaN()) {
+  AfterEveryStep<D, std::function<void(const Simulation<D>&)>> observer(after_step);
+  const double end = std::isnan(end_time) ? scene.end_time : end_time;
+  const AdvanceResult result = advance<D>(*scene.simulation, end, {&observer});
   if (result.instability) {
     ADD_FAILURE() << "unstable at t = " << result.instability->time << ": " << result.instability->reason;
     return false;

@@ -29,11 +29,11 @@ constexpr double rho = 1000.0;
 // A channel periodic in x over [0, nx dp): nx x ny fluid particles on the square lattice at ((i + 1/2) dp,
 // (j + 1/2) dp) moving at u, with or without a floor (face y = 0) and a ceiling (face y = ny dp). The walls' faces
 // run from dp/2 to L - dp/2, so their particles sit at the same x as the fluid columns, each once in the period.
-struct Channel {
+struct PeriodicChannel {
   Simulation<2> sim;
   double L = 0.0, H = 0.0;
 
-  Channel(int nx, int ny, const Vec<2>& u, bool walls, WallSlip slip = WallSlip::free_slip, double mu = 1e-3) {
+  PeriodicChannel(int nx, int ny, const Vec<2>& u, bool walls, WallSlip slip = WallSlip::free_slip, double mu = 1e-3) {
     L = nx * dp;
     H = ny * dp;
     auto& o = sim.options;
@@ -88,7 +88,7 @@ TEST(Periodic, WrapBringsXIntoThePeriod) {
 // included, has the lattice's number density, and the MPS Laplacian of u = (U + G y, c y^2) is (0, 2 c) exactly
 // there (the lattice sums that define n0 and lambda make it exact for quadratic fields).
 TEST(Periodic, LatticeFillsThePlaneInX) {
-  Channel ch(16, 12, Vec<2>::Zero(), false);
+  PeriodicChannel ch(16, 12, Vec<2>::Zero(), false);
   auto& sim = ch.sim;
   sim.initialise();
   const auto& P = sim.particles();
@@ -127,7 +127,7 @@ TEST(Periodic, LatticeFillsThePlaneInX) {
 // (n <= n0, negative pressure clamped), no viscous force, no collision.
 TEST(Periodic, UniformFlowInStripIsUnchangedBySteps) {
   const double U = 1.5;
-  Channel ch(16, 12, Vec<2>(U, 0.0), false);
+  PeriodicChannel ch(16, 12, Vec<2>(U, 0.0), false);
   auto& sim = ch.sim;
   sim.initialise();
   const auto& P = sim.particles();
@@ -155,7 +155,7 @@ TEST(Periodic, UniformFlowInStripIsUnchangedBySteps) {
 TEST(Periodic, UniformChannelFlowKeepsGoingThroughWraps) {
   const double U = 2.0;
   const int nx = 16, ny = 8;
-  Channel ch(nx, ny, Vec<2>(U, 0.0), true);
+  PeriodicChannel ch(nx, ny, Vec<2>(U, 0.0), true);
   auto& sim = ch.sim;
   sim.initialise();
   const auto& P = sim.particles();
@@ -302,7 +302,7 @@ TEST(Periodic, GhostsAreTheExpectedImages) {
 
 // In a simulation the ghosts after a rebuild are the images of the real particles within re + skin of the ends.
 TEST(Periodic, SimulationGhostsAreTheRealParticlesNearTheEnds) {
-  Channel ch(20, 6, Vec<2>(0.3, 0.0), true);
+  PeriodicChannel ch(20, 6, Vec<2>(0.3, 0.0), true);
   auto& sim = ch.sim;
   sim.initialise();
   const auto& P = sim.particles();
@@ -327,16 +327,16 @@ TEST(Periodic, SimulationGhostsAreTheRealParticlesNearTheEnds) {
 // twice re + skin, and wall particles outside the period.
 TEST(Periodic, RefusesBodiesShortPeriodsAndWallsOutsideThePeriod) {
   {
-    Channel ch(16, 4, Vec<2>::Zero(), true);
+    PeriodicChannel ch(16, 4, Vec<2>::Zero(), true);
     ch.sim.attach_bodies(std::make_shared<RigidBodies>(Vec<2>::Zero(), 0.001));
     EXPECT_THROW(ch.sim.initialise(), std::invalid_argument);
   }
   {
-    Channel ch(4, 4, Vec<2>::Zero(), false);
+    PeriodicChannel ch(4, 4, Vec<2>::Zero(), false);
     EXPECT_THROW(ch.sim.initialise(), std::invalid_argument);
   }
   {
-    Channel ch(16, 4, Vec<2>::Zero(), false);
+    PeriodicChannel ch(16, 4, Vec<2>::Zero(), false);
     const std::size_t i = ch.sim.particles().add(Vec<2>(ch.L, -0.5 * dp), Kind::wall, 0, rho, 1e-3);
     ch.sim.particles().wall_normal[i] = Vec<2>(0.0, 1.0);
     ch.sim.particles().wall_depth[i] = 0.5 * dp;
@@ -350,7 +350,7 @@ TEST(Periodic, RefusesBodiesShortPeriodsAndWallsOutsideThePeriod) {
 TEST(Periodic, OneAndTwoThreadsGiveIdenticalStates) {
   auto run = [](int threads) {
     set_thread_count(threads);
-    Channel ch(64, 64, Vec<2>::Zero(), true, WallSlip::no_slip, 0.01);
+    PeriodicChannel ch(64, 64, Vec<2>::Zero(), true, WallSlip::no_slip, 0.01);
     auto& sim = ch.sim;
     sim.options.gravity = Vec<2>(2.0, 0.0);
     auto& P = sim.particles();
@@ -388,7 +388,7 @@ TEST(Periodic, OneAndTwoThreadsGiveIdenticalStates) {
 TEST(Periodic, ImplicitViscosityOneAndTwoThreadsGiveIdenticalStates) {
   auto run = [](int threads) {
     set_thread_count(threads);
-    Channel ch(96, 64, Vec<2>::Zero(), true, WallSlip::no_slip, 1e-3);
+    PeriodicChannel ch(96, 64, Vec<2>::Zero(), true, WallSlip::no_slip, 1e-3);
     auto& sim = ch.sim;
     sim.options.gravity = Vec<2>(2.0, 0.0);
     sim.options.viscous_scheme = ViscousScheme::implicit;
@@ -426,7 +426,7 @@ TEST(Periodic, ImplicitViscosityOneAndTwoThreadsGiveIdenticalStates) {
 TEST(Periodic, PoiseuilleFlowIsUniformInX) {
   const int nx = 8, ny = 20;
   const double mu = 10.0, g = 0.2;
-  Channel ch(nx, ny, Vec<2>::Zero(), true, WallSlip::no_slip, mu);
+  PeriodicChannel ch(nx, ny, Vec<2>::Zero(), true, WallSlip::no_slip, mu);
   auto& sim = ch.sim;
   sim.options.gravity = Vec<2>(g, 0.0);
   sim.options.sound_speed = 1.0;

@@ -314,7 +314,7 @@ TEST(StrainRate, ExactForLinearFieldsOnCubicLattice) { expect_exact_shear_rates<
 // A channel floor: the face y = 0 from x = -3.5 dp to (columns + 3.5) dp, fixed wall particles (velocity 0) from
 // polyline_boundary below it (walking +x, the fluid lies on the left, above), and square-lattice fluid above in simple
 // shear u = (gamma y, 0), which vanishes on the face.
-struct Channel {
+struct ShearedChannel {
   static constexpr int columns = 14, rows = 12;
   double dp = 0.1, re;
   double gamma = 3.7;
@@ -323,7 +323,7 @@ struct Channel {
   NeighborList list;
   LatticeConstants constants;
 
-  explicit Channel(double re_over_dp) : re(re_over_dp * dp), layers(boundary_layers(re_over_dp)) {
+  explicit ShearedChannel(double re_over_dp) : re(re_over_dp * dp), layers(boundary_layers(re_over_dp)) {
     for (const auto& b : polyline_boundary({Vec<2>(-3.5 * dp, 0.0), Vec<2>((columns + 3.5) * dp, 0.0)}, true, dp,
                                            layers)) {
       const std::size_t i = P.add(b.position, b.layer == 0 ? Kind::wall : Kind::dummy, 0, 1000.0, 1e-3);
@@ -347,7 +347,7 @@ struct Channel {
 };
 
 TEST(StrainRate, PolylineFloorIsBelowTheFluid) {
-  const Channel C(2.1);
+  const ShearedChannel C(2.1);
   int walls = 0;
   for (std::size_t i = 0; i < C.P.size(); ++i)
     if (C.P.kind[i] != Kind::fluid) {
@@ -356,12 +356,12 @@ TEST(StrainRate, PolylineFloorIsBelowTheFluid) {
       EXPECT_EQ(C.P.wall_normal[i], Vec<2>(0.0, 1.0));
       EXPECT_NEAR(C.P.wall_depth[i], -C.P.position[i][1], 1e-15);
     }
-  EXPECT_EQ(walls, 3 * (Channel::columns + 8));
+  EXPECT_EQ(walls, 3 * (ShearedChannel::columns + 8));
 }
 
 // The mirror factor is the one the viscous force uses: viscous_pair_term with mu = 1 is factor * W * (u_j - u_i).
 TEST(StrainRate, WallMirrorAgreesWithViscousPairTerm) {
-  Channel C(3.1);
+  ShearedChannel C(3.1);
   int pairs = 0;
   for (std::size_t i = 0; i < C.P.size(); ++i) {
     if (C.P.kind[i] != Kind::fluid) continue;
@@ -384,7 +384,7 @@ TEST(StrainRate, WallMirrorAgreesWithViscousPairTerm) {
 // the default kernel and a wider one. (With Morris et al.'s cap of the factor at 1.5, the first row read
 // 0.8748867 gamma at re = 2.1 dp, and rows 0 and 1 0.848222 and 0.9999925 gamma at re = 3.1 dp.)
 void expect_floor_shear_rates_exact(double re_over_dp) {
-  const Channel C(re_over_dp);
+  const ShearedChannel C(re_over_dp);
   std::set<int> rows;
   for (std::size_t i = 0; i < C.P.size(); ++i) {
     if (!C.tested(i)) continue;
@@ -438,7 +438,7 @@ TEST(StrainRate, MirrorClipsTheDistanceFromTheFace) {
 // velocity. Every row is exact, those within re of the wall too: their neighbours lie on one side only, but the
 // corrected gradient (M^-1 in place of d / n0) is exact for a linear field on any neighbourhood that spans the plane.
 TEST(StrainRate, FreeSlipLeavesWallsOut) {
-  Channel C(2.1);
+  ShearedChannel C(2.1);
   Particles<2> fluid;
   std::vector<std::size_t> in_fluid(C.P.size(), 0);
   for (std::size_t i = 0; i < C.P.size(); ++i) {

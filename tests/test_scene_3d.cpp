@@ -60,6 +60,9 @@ TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
   EXPECT_EQ(refusal_key(tank_scene("square", "bodies: []\n")), "bodies");
   EXPECT_EQ(refusal_key(tank_scene("square", "gravity: [0, -9.81]\n")), "gravity");
   EXPECT_EQ(refusal_key(tank_scene("hexagonal")), "lattice");
+  std::string mirror = tank_scene("square");
+  mirror.replace(mirror.find("method: {initial_state: lattice}"), 32, "method: {initial_state: lattice, wall_pressure: mirror}");
+  EXPECT_EQ(refusal_key(mirror), "method.wall_pressure");
   EXPECT_EQ(refusal_key(tank_scene("square") + "profiles: {times: [0.1]}\n"), "profiles");
   std::string four = tank_scene("square");
   four.replace(four.find("dimension: 3"), 12, "dimension: 4");

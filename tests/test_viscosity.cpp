@@ -34,7 +34,7 @@ constexpr double mu = 0.1;      // Pa s, nu = 1e-4 m^2/s
 // ((i + 1/2) dp, (j + 1/2) dp): 20 rows. Hexagonal lattice: walls cut from the lattice (lattice_boundary), fluid the
 // lattice points strictly between the faces: 21 rows (row spacing 0.9306 dp), the lowest 0.465 dp above the floor,
 // the highest 0.922 dp below the ceiling, whose first wall row lies only 0.0077 dp behind its face.
-struct Channel {
+struct WallChannel {
   LatticeKind kind;
   double dp = 0.01;
   double re = 2.1 * dp;
@@ -45,7 +45,7 @@ struct Channel {
   LatticeConstants c;
   std::vector<std::size_t> fluid, floor_walls, ceiling_walls;
 
-  explicit Channel(LatticeKind k) : kind(k) {
+  explicit WallChannel(LatticeKind k) : kind(k) {
     const double ext = 3 * dp;
     // Square lattice: the open faces' wall points are anchored at the face's start, so the start is put on the
     // lattice's column x = -5/2 dp.
@@ -106,7 +106,7 @@ struct RowFigure {
 };
 
 void couette(LatticeKind kind, const std::vector<RowFigure>& pinned) {
-  Channel ch(kind);
+  WallChannel ch(kind);
   auto& P = ch.P;
   const double U = 0.5, nu = mu / rho;
   for (auto i : ch.fluid) P.velocity[i] = Vec<2>(U * ch.y(i) / ch.H, 0.0);
@@ -190,7 +190,7 @@ struct PoiseuilleErrors {
 };
 
 PoiseuilleErrors poiseuille(LatticeKind kind) {
-  Channel ch(kind);
+  WallChannel ch(kind);
   auto& P = ch.P;
   const double nu = mu / rho, g = 8.0 * nu / (ch.H * ch.H);  // u_max = 1 m/s
   std::map<long, int> row_of;  // lattice row -> unknown
@@ -268,7 +268,7 @@ TEST(Viscosity, PoiseuilleHexagonal) {
 // moving at (U, 0) has zero viscous acceleration everywhere (exactly: every fluid pair has u_j - u_i = 0), whereas
 // no_slip brakes the rows beside the resting floor. With the Couette profile, the ceiling's velocity changes nothing.
 void free_slip(LatticeKind kind) {
-  Channel ch(kind);
+  WallChannel ch(kind);
   auto& P = ch.P;
   const double U = 0.5;
   for (auto i : ch.fluid) P.velocity[i] = Vec<2>(U, 0.0);

@@ -193,7 +193,8 @@ def snapshot_indices(count, wanted=4):
 
 
 def plot_particles(run, target):
-    """The particles at up to four times: top row by phase (boundary particles grey), bottom row by speed."""
+    """The particles at up to four times: top row by phase (boundary particles grey), bottom row by speed. A 3-D run is
+    drawn as a side view (x, z) of the slab one spacing thick across the middle of its y extent."""
     try:
         import h5py
         import numpy as np
@@ -212,6 +213,21 @@ def plot_particles(run, target):
         kind_codes = f["snapshots/%06d/kind" % picked[0][0]].attrs.get("codes", b"")
     if not frames:
         return
+    # Markers one spacing wide: the axes' points per metre times dp (run.json), so that the lattice shows no gaps.
+    try:
+        with open(os.path.join(run, "run.json")) as f:
+            dp = float(json.load(f)["scene"]["particle_spacing"])
+    except (OSError, KeyError, ValueError):
+        dp = None
+    three_d = frames[0][1].shape[1] == 3
+    if three_d:
+        y_mid = 0.5 * (frames[0][1][:, 1].min() + frames[0][1][:, 1].max())
+        half = 0.5 * (dp if dp else 0.01 * np.ptp(frames[0][1][:, 1]))
+        slabs = []
+        for t, x, v, phase, kind in frames:
+            m = np.abs(x[:, 1] - y_mid) <= half
+            slabs.append((t, x[m][:, [0, 2]], v[m], phase[m], kind[m]))
+        frames = slabs
     kind_codes = kind_codes.decode() if isinstance(kind_codes, bytes) else str(kind_codes)
     fluid_code = 0
     for item in kind_codes.split(","):  # "0 fluid, 1 wall, 2 dummy" (tools/snapshot_writer.hpp)
@@ -224,13 +240,9 @@ def plot_particles(run, target):
     width = 4.2
     fig, axes = plt.subplots(2, len(frames), figsize=(width * len(frames) + 1.0, 2 * width * aspect + 1.0),
                              squeeze=False, layout="constrained")
-    top_speed = max(float(np.linalg.norm(v[k == fluid_code][:, :2], axis=1).max(initial=0.0))
+    top_speed = max(float(np.linalg.norm(v[k == fluid_code], axis=1).max(initial=0.0))
                     for _, _, v, _, k in frames) or 1.0
-    # Markers one spacing wide: the axes' points per metre times dp (run.json), so that the lattice shows no gaps.
-    try:
-        with open(os.path.join(run, "run.json")) as f:
-            dp = float(json.load(f)["scene"]["particle_spacing"])
-    except (OSError, KeyError, ValueError):
+    if dp is None:
         dp = (hi[0] - lo[0]) / 200.0
     size = (1.15 * dp * width * 72.0 / max(hi[0] - lo[0], 1e-12)) ** 2
     for col, (t, x, v, phase, kind) in enumerate(frames):
@@ -242,7 +254,7 @@ def plot_particles(run, target):
         ax.set_title(f"t = {t:.3g} s: phase", fontsize=9)
         ax = axes[1][col]
         ax.scatter(x[~fluid, 0], x[~fluid, 1], s=size, c="#888888", linewidths=0)
-        sc = ax.scatter(x[fluid, 0], x[fluid, 1], s=size, c=np.linalg.norm(v[fluid, :2], axis=1), cmap="viridis",
+        sc = ax.scatter(x[fluid, 0], x[fluid, 1], s=size, c=np.linalg.norm(v[fluid], axis=1), cmap="viridis",
                         vmin=0.0, vmax=top_speed, linewidths=0)
         ax.set_title(f"t = {t:.3g} s: speed", fontsize=9)
         for a in (axes[0][col], axes[1][col]):
@@ -251,7 +263,8 @@ def plot_particles(run, target):
             a.set_ylim(lo[1], hi[1])
             a.tick_params(labelsize=7)
     fig.colorbar(sc, ax=[a for row in axes for a in row], label="speed, m/s", shrink=0.6)
-    fig.suptitle(f"{label_of(run)}: particles (grey: walls and bodies)", fontsize=10)
+    view = f" (3-D: side view, x and z, of the slab |y - {y_mid:.3g} m| <= dp/2)" if three_d else ""
+    fig.suptitle(f"{label_of(run)}: particles (grey: walls and bodies){view}", fontsize=10)
     fig.savefig(target, dpi=110)
     plt.close(fig)
 
