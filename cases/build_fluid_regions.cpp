@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cases/scene_build.hpp"
+#include "coupling/position_text.hpp"
 #include "fluid/neighbor_grid.hpp"
 #include "fluid/walls.hpp"
 
@@ -204,10 +205,10 @@ void check_overlaps(SceneBuild<D>& b) {
       if (j < n_boundary)
         throw SceneError(path, fmt::format("water overlaps {}: a particle at {} is {:.3g} dp "
                                            "from one of its boundary particles (at least 0.75 dp needed)",
-                                           b.boundary_owner[j], point_text<D>(P.position[i]), std::sqrt(r2) / dp));
+                                           b.boundary_owner[j], position_text<D>(P.position[i]), std::sqrt(r2) / dp));
       if (j < i)
         throw SceneError(path, fmt::format("overlaps {} at {}", b.fluid_owner[j - n_boundary],
-                                           point_text<D>(P.position[i])));
+                                           position_text<D>(P.position[i])));
     });
   }
 }

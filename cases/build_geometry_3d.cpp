@@ -35,6 +35,19 @@ bool in_box(LatticeKind kind, const Vec<3>& p, const Vec<3>& lo, const Vec<3>& h
   return true;
 }
 
+// On the cubic lattice a tank's faces must lie between lattice planes, on multiples of dp (all but its top): a face
+// elsewhere leaves a plane that is neither wall nor water (its cell is not inside), a gap of up to 2 dp between them.
+void check_on_the_cubic_lattice(const Vec<3>& lo, const Vec<3>& hi, double dp, std::size_t w) {
+  const auto off = [dp](double v) { return std::abs(v / dp - std::round(v / dp)) > 1e-6; };
+  for (int a = 0; a < 3; ++a)
+    if (off(lo[a]) || (a < 2 && off(hi[a])))
+      throw SceneError(fmt::format("walls[{}].{}", w, off(lo[a]) ? "min" : "max"),
+                       fmt::format("on the square lattice a tank's faces lie on multiples of particle_spacing ({} m; "
+                                   "max.z, its top, excepted), so that the walls continue the water's lattice; this one's "
+                                   "{} is {:.9g} m, {:.6g} spacings: move it to a whole number",
+                                   dp, "xyz"[a], off(lo[a]) ? lo[a] : hi[a], (off(lo[a]) ? lo[a] : hi[a]) / dp));
+}
+
 }  // namespace
 
 // Boundary particles of the first phase's density, as in 2-D; a point already placed by an earlier wall (where two
@@ -46,6 +59,7 @@ void build_walls(SceneBuild<3>& b) {
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];
     const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
+    if (b.sim->options.lattice == LatticeKind::square) check_on_the_cubic_lattice(lo, hi, b.dp, w);
     std::vector<BoundaryPointOf<3>> pts;
     try {
       const FluidOptions<3>& opt = b.sim->options;
@@ -109,7 +123,7 @@ void fill_fluid_regions(SceneBuild<3>& b) {
             if (&t[0] == &lo) break;
             earlier = earlier || in_tank(p, t[0], t[1]);
           }
-          take(p, p[2] < level && in_tank(p, lo, hi) && !earlier);
+          take(p, p[2] < top[2] && in_tank(p, lo, hi) && !earlier);  // below the level and the tank's top
         });
       }
     }

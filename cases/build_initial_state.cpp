@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cases/scene_build.hpp"
+#include "coupling/position_text.hpp"
 #include "fluid/periodic.hpp"
 #include "coupling/equilibrium_column.hpp"
 #include "coupling/relaxation.hpp"
@@ -106,7 +107,7 @@ void set_domain(SceneBuild<D>& b) {
     for (std::size_t i = 0; i < P.size(); ++i)
       for (int k = 0; k < D; ++k)
         if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
-          throw SceneError("domain", fmt::format("particle at {} lies outside the domain", point_text<D>(P.position[i])));
+          throw SceneError("domain", fmt::format("particle at {} lies outside the domain", position_text<D>(P.position[i])));
     opt.periodic_x = b.period_x;
   }
   if constexpr (D == 2) {

@@ -87,7 +87,7 @@ void check_particle_budget(SceneBuild<D>& b) {
                                                      "than slide can index (2^32 - 1); use a larger particle_spacing",
                                                      n, b.dp));
   const auto limit = read_memory_limit();
-  const double bytes = program_resident_bytes() + particle_state_bytes(n);
+  const double bytes = program_resident_bytes() + particle_state_bytes(n, D);
   if (limit && bytes > limit->total_bytes())
     throw SceneError("particle_spacing",
                      fmt::format("the scene would make about {:.3g} particles at dp = {} m, whose arrays alone need "
@@ -104,6 +104,7 @@ void check_run_memory(SceneBuild<D>& b) {
   const Simulation<D>& sim = *b.sim;
   const double n = double(sim.particles().size());
   RunMemoryInputs in;
+  in.dimension = D;
   in.particles = n;
   in.listed_per_particle = double(sim.neighbors().total()) / std::max(1.0, n);
   in.snapshots = b.scene->output.snapshots;

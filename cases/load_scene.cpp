@@ -2,6 +2,7 @@
 // schema. Nothing here builds particles; the fuzz target (tests/fuzz/) drives exactly this.
 #include <yaml-cpp/yaml.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -13,11 +14,16 @@
 namespace slide::cases {
 namespace {
 
-// The schema a scene is checked against follows its `dimension` (2 unless it says 3); any other value is left to the
-// 2-D schema, which refuses it with its range.
+// The schema a scene is checked against follows its `dimension`: 3 for any text the schema reads as the integer 3
+// ("3", "3.0", "+3", "03"), 2 otherwise; a value neither 2 nor 3 is left to the 2-D schema, which refuses it with its
+// range.
 int requested_dimension(const YAML::Node& raw) {
   const YAML::Node d = raw["dimension"];
-  return d && d.IsScalar() && d.Scalar() == "3" ? 3 : 2;
+  if (!d || !d.IsScalar()) return 2;
+  const std::string& text = d.Scalar();
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size() && value == 3.0 ? 3 : 2;
 }
 
 // 2-D keys that 3-D scenes do not have yet: named as such rather than as unknown keys.

@@ -15,6 +15,7 @@ struct RunMemoryInputs {
   bool bodies_or_slides = false;     // rigid bodies (Bullet) or deformable slides
   bool non_newtonian = false;        // a phase with a rheology: the semi-implicit viscosity's vectors
   double body_steps = 0.0;           // rigid bodies x the steps of the settling and the run (Bullet's journal)
+  int dimension = 2;                 // 3: the 3-D factor (particle_budget.cpp)
 };
 
 // The run's peak resident memory above the program's own (program_resident_bytes), bytes: fixed parts, per-particle
@@ -24,7 +25,7 @@ double run_memory_bytes(const RunMemoryInputs& in);
 
 // Bytes of the particles' own arrays (fluid/particles.hpp) for n particles: what any run of them holds at least. The
 // guard before any particle is made refuses a scene whose particles alone would not fit.
-double particle_state_bytes(double n);
+double particle_state_bytes(double n, int dimension = 2);
 
 // Listed neighbours a particle has on average, estimated before any particle is made: the 2-D lattice points within
 // the list's radius (re + skin), a quarter more for compression.

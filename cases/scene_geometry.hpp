@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "fluid/vec.hpp"
 #include "rigid/polygon.hpp"
 
@@ -23,13 +21,6 @@ Vec<D> vec_of(const YAML::Node& n) {
   return v;
 }
 inline Vec<2> vec2(const YAML::Node& n) { return vec_of<2>(n); }
-// A point for messages: "(x, y)" or "(x, y, z)", 6 significant digits.
-template <int D>
-std::string point_text(const Vec<D>& p) {
-  std::string out = "(";
-  for (int k = 0; k < D; ++k) out += (k ? ", " : "") + fmt::format("{:.6g}", p[k]);
-  return out + ")";
-}
 std::vector<Vec<2>> points_of(const YAML::Node& n);
 
 // The same point for the fluid side (Vec<2>) and the rigid side (rigid::Vec2).

@@ -335,15 +335,15 @@ Schema box_schema(std::string doc) {
 
 Schema region_schema_3d() {
   return S::variant(
-      "a region filled with fluid particles on the simple cubic lattice (x = (i + 1/2) dp, y = (j + 1/2) dp, "
-      "z = (k + 1/2) dp)",
+      "a region filled with fluid particles on the scene's lattice (fluid/lattice.hpp)",
       "type",
-      {{"box", S::map("the particles whose cell lies inside [min, max]",
+      {{"box", S::map("the lattice points of [min, max]: on the square lattice those whose cell lies inside, on the "
+                      "fcc lattice those whose centre lies strictly inside",
                       {{"phase", S::text("phase name (default: the first phase)", "")},
                        {"min", S::vector("lower corner", "m", 3, std::nullopt)},
                        {"max", S::vector("upper corner", "m", 3, std::nullopt)}})},
-       {"below_level", S::map("water below a level inside the walls: every lattice point below the level whose "
-                              "cell lies inside a tank",
+       {"below_level", S::map("water below a level inside the tanks: every lattice point of a tank's inside (by the "
+                              "box rule) below the level and the tank's top",
                               {{"phase", S::text("phase name (default: the first phase)", "")},
                                {"level", S::number("still-water level (z)", "m", std::nullopt)}})}});
 }
@@ -354,7 +354,8 @@ Schema wall_schema_3d() {
       "them at (k + 1/2) dp",
       "type",
       {{"tank", S::map("the inside of an axis-aligned box, open at the top: its floor at min.z and four sides up to "
-                       "max.z hold the fluid (fluid/box_walls.hpp)",
+                       "max.z hold the fluid (fluid/box_walls.hpp); on the square lattice its faces (all but the top) "
+                       "lie on multiples of particle_spacing; tanks must not overlap",
                        {{"name", S::text("name used in messages", "")},
                         {"min", S::vector("lower corner of the inside", "m", 3, std::nullopt)},
                         {"max", S::vector("upper corner of the inside (max.z: the sides' top)", "m", 3, std::nullopt)},
@@ -393,8 +394,8 @@ Schema make_schema_3d() {
                              "that still water needs to stay at rest, whose walls are cut from the same lattice to the "
                              "depth re (layers unused; a tank's water is the lattice points inside it, so a side of a "
                              "whole number of planes s holds exactly its volume); or square (simple cubic), on which a "
-                             "still tank stirs itself (1 s of the 0.2 m tank: largest speed 6.9 % of sqrt(g H) against "
-                             "1.3 % on fcc, docs/three-d.md)",
+                             "still tank stirs itself (1 s of the 0.2 m tank: largest speed 7.87 % of sqrt(g H) "
+                             "against 2.92 % on fcc with the same settling, docs/three-d.md)",
                              {std::string(to_string(LatticeKind::square)), std::string(to_string(LatticeKind::fcc))},
                              std::string(to_string(LatticeKind::fcc)))},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, S::inf, true, false)},

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "coupling/advance.hpp"
+#include "coupling/position_text.hpp"
 #include "coupling/rigid_bodies.hpp"
 
 namespace slide {
@@ -107,10 +108,9 @@ Relaxation Settling<D>::finish() {
   // Water at rest stays in the domain: what left it while settling flowed off an open edge.
   if (const auto& left = sim.left_the_domain(); !left.empty())
     throw std::runtime_error(fmt::format(
-        "{} fluid particle{} left the domain while the water settled (the first, {}, at t = {:.6g} s at ({:.6g}, "
-        "{:.6g})): it is not at rest; hold it with a wall, or start it without settling (initial_state: lattice)",
-        left.size(), left.size() == 1 ? "" : "s", left.front().id, left.front().time, left.front().position[0],
-        left.front().position[1]));
+        "{} fluid particle{} left the domain while the water settled (the first, {}, at t = {:.6g} s at {}): it is not "
+        "at rest; hold it with a wall, or start it without settling (initial_state: lattice)",
+        left.size(), left.size() == 1 ? "" : "s", left.front().id, left.front().time, position_text(left.front().position)));
   Relaxation out = out_;
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();

@@ -56,5 +56,36 @@ TEST(BoxWalls, FccTankIsCutFromTheLatticeToTheDepthRe) {
   EXPECT_EQ(deepest_layer, static_cast<int>(std::floor(re / s)));
 }
 
+// A tank whose faces lie on the fcc lattice's planes (min = s/2: the plane i = 0): the points on a face are the wall's,
+// with depth 0 and the face's inward normal (on an edge, the sum of its two faces' normals, normalised).
+TEST(BoxWalls, FccPointsOnAFaceAreTheWallsWithDepthZero) {
+  const double dp = 0.01, re = 2.1 * dp, s = row_spacing(LatticeKind::fcc, dp);
+  const Vec<3> lo = Vec<3>::Constant(0.5 * s), hi(0.5 * s + 12 * s, 0.5 * s + 12 * s, 0.1);
+  const auto pts = tank_boundary(LatticeKind::fcc, lo, hi, dp, 0, re);
+  int on_floor = 0, on_edge = 0;
+  for (const auto& p : pts) {
+    if (p.depth > 1e-12) continue;
+    EXPECT_EQ(p.layer, 0);
+    const bool floor = std::abs(p.position[2] - lo[2]) < 1e-12;
+    const bool side_x = std::abs(p.position[0] - lo[0]) < 1e-12 || std::abs(p.position[0] - hi[0]) < 1e-12;
+    const bool side_y = std::abs(p.position[1] - lo[1]) < 1e-12 || std::abs(p.position[1] - hi[1]) < 1e-12;
+    EXPECT_TRUE(floor || side_x || side_y) << p.position.transpose();
+    EXPECT_NEAR(p.normal.norm(), 1.0, 1e-12);
+    if (floor && !side_x && !side_y) {
+      ++on_floor;
+      EXPECT_NEAR((p.normal - Vec<3>(0, 0, 1)).norm(), 0.0, 1e-12);
+    }
+    if (floor && side_x && !side_y) {
+      ++on_edge;
+      const double nx = p.position[0] < 0.05 ? 1.0 : -1.0;
+      EXPECT_NEAR((p.normal - Vec<3>(nx, 0, 1) / std::sqrt(2.0)).norm(), 0.0, 1e-12);
+    }
+  }
+  // The floor's plane inside the edges: i, j from 1 to 11 with i + j even (k = 0): 61 points; each x edge holds the
+  // even j from 1 to 11 with i = 0 or 12: 5 + 5 points.
+  EXPECT_EQ(on_floor, 61);
+  EXPECT_EQ(on_edge, 10);
+}
+
 }  // namespace
 }  // namespace slide

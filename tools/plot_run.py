@@ -209,7 +209,8 @@ def plot_particles(run, target):
         for i, t in picked:
             g = f["snapshots/%06d" % i]
             kind = g["kind"][()]
-            frames.append((t, g["position"][()], g["velocity"][()], g["phase"][()], kind))
+            dim = int(g.attrs.get("dim", 2))  # positions are stored with three columns in 2-D too
+            frames.append((t, g["position"][()][:, :dim], g["velocity"][()][:, :dim], g["phase"][()], kind))
         kind_codes = f["snapshots/%06d/kind" % picked[0][0]].attrs.get("codes", b"")
     if not frames:
         return

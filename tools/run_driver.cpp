@@ -20,6 +20,7 @@
 #include "cases/scene.hpp"
 #include "cases/yaml_text.hpp"
 #include "coupling/free_surface_gauge.hpp"
+#include "coupling/position_text.hpp"
 #include "coupling/relaxation.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/surge_front.hpp"
@@ -127,7 +128,7 @@ int check_scene(const RunArguments& args, const YAML::Node& resolved) {
     try {
       const double fluid = double(scene->fluid_count);
       std::cout << recommendation_report(args.sweep_dir, args.target_error, fluid,
-                                         double(sim.particles().real_count()) - fluid, steps, sim.options.dp);
+                                         double(sim.particles().real_count()) - fluid, steps, sim.options.dp, D);
     } catch (const std::exception& e) {
       std::cerr << "slide: --with " << args.sweep_dir.string() << ": " << e.what() << "\n";
       return 2;
@@ -218,12 +219,6 @@ json left_the_domain_json(const Simulation<D>& sim) {
 }
 
 // The completed message's note of them, empty when none left.
-// "(x, y)" or "(x, y, z)": a position for messages.
-std::string position_text(const std::vector<double>& p) {
-  std::string out = "(";
-  for (std::size_t k = 0; k < p.size(); ++k) out += (k ? ", " : "") + fmt::format("{:.6g}", p[k]);
-  return out + ")";
-}
 
 template <int D>
 std::string left_the_domain_note(const Simulation<D>& sim) {
@@ -661,6 +656,7 @@ int run_command(const RunArguments& args) {
       std::cerr << "slide: --resume " << args.resume.string() << ": " << e.what() << "; nothing was run or written\n";
       return 2;
     } catch (const std::exception&) {
+      if (!checkpoint) throw;  // not the scene's text: what read_checkpoint threw goes on as it did
       dimension = 2;  // a scene the checkpoint cannot give back: prepare_resumed_run says why
     }
   }

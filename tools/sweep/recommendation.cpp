@@ -21,7 +21,7 @@ std::optional<RunResult> cheapest_within(const std::vector<RunResult>& results, 
 }
 
 std::string recommendation_report(const std::filesystem::path& dir, double target, double fluid, double boundary,
-                                  double steps, double dp) {
+                                  double steps, double dp, int dimension) {
   const Sweep s = read_plan(dir);
   if (s.error.measure == ErrorMeasure::none) throw std::runtime_error("the sweep measured no error");
   const std::vector<RunResult> results = collect_results(s, dir);
@@ -54,8 +54,8 @@ std::string recommendation_report(const std::filesystem::path& dir, double targe
   const auto spacing = std::find(s.varied_keys.begin(), s.varied_keys.end(), "particle_spacing");
   if (spacing != s.varied_keys.end() && !best->values[spacing - s.varied_keys.begin()].empty()) {
     const double ratio = dp / std::stod(best->values[spacing - s.varied_keys.begin()]);
-    fluid *= ratio * ratio;
-    boundary *= ratio;
+    fluid *= std::pow(ratio, dimension);
+    boundary *= std::pow(ratio, dimension - 1);
     steps *= ratio;
   }
   const double particles = fluid + boundary;

@@ -20,11 +20,12 @@ std::optional<RunResult> cheapest_within(const std::vector<RunResult>& results, 
 // What `slide check --target-error E --with SWEEP_DIR` prints: the cheapest run of the sweep in SWEEP_DIR within E,
 // its settings and cost, and that cost per particle-step (the loop's CPU seconds / (particles x steps)) applied to the checked
 // scene (`fluid` and `boundary` particles, about `steps` steps, spacing `dp`) with the run's settings: where they
-// change the spacing to dp', the fluid particles scale by (dp / dp')^2 (2-D), the boundary ones (walls, bodies) by
-// dp / dp', and the steps by dp / dp' (the acoustic time step is proportional to the spacing). When no run is within
+// change the spacing to dp', the fluid particles scale by (dp / dp')^D, the boundary ones (walls, bodies) by
+// (dp / dp')^(D - 1), and the steps by dp / dp' (the acoustic time step is proportional to the spacing); D the
+// scene's dimension. When no run is within
 // E, the smallest error measured.
 // std::runtime_error when SWEEP_DIR holds no sweep or the sweep measured no error.
 std::string recommendation_report(const std::filesystem::path& sweep_dir, double target_error, double fluid,
-                                  double boundary, double steps, double dp);
+                                  double boundary, double steps, double dp, int dimension = 2);
 
 }  // namespace slide::tools
