@@ -2,6 +2,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
@@ -13,13 +15,18 @@ static_assert(sizeof(btScalar) == 8, "Bullet must be compiled and used in double
 
 namespace {
 btVector3 v3(const Vec2& v) { return btVector3(v[0], v[1], 0.0); }
+btVector3 v3(const Vec3& v) { return btVector3(v[0], v[1], v[2]); }
+Vec3 from_bt(const btVector3& v) { return Vec3(v.x(), v.y(), v.z()); }
 
 // The rotation about z from a quaternion that has only a z component (planar motion).
 double z_angle(const btQuaternion& q) { return 2.0 * std::atan2(q.z(), q.w()); }
 }  // namespace
 
 // The calls a journal records.
-enum class Op { add_body = 1, add_static_segment, set_held, set_kinematic_state, translate, set_velocity, apply_force, step };
+enum class Op {
+  add_body = 1, add_static_segment, set_held, set_kinematic_state, translate, set_velocity, apply_force, step,
+  add_solid, add_static_box, translate_3d, set_velocity_3d, apply_force_3d
+};
 
 namespace {
 // Bullet's default pools hold 4096 contact manifolds and 4096 collision algorithms: 8 MB resident for every scene
@@ -41,19 +48,24 @@ struct RigidWorld::Impl {
   btSequentialImpulseConstraintSolver solver;
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   double margin;
-  Vec2 gravity;
+  Vec3 gravity;
 
   struct Body {
     std::unique_ptr<btConvexHullShape> shape;
     std::unique_ptr<btDefaultMotionState> motion;
     std::unique_ptr<btRigidBody> rigid;
-    BodySpec spec;
+    BodySpec spec;     // planar bodies
+    bool planar = true;
+    double mass = 0.0;  // kg (per unit width for planar bodies)
+    // Solid bodies: Bullet's frame is the body's principal axes; this turns its rotation back into the rotation since
+    // creation (identity when the inertia tensor was diagonal in world axes already).
+    btQuaternion principal_to_placed = btQuaternion::getIdentity();
     bool held = false;
-    double angle = 0.0;  // continuous angle
-    Vec2 velocity_before = Vec2::Zero();
-    Vec2 force = Vec2::Zero();         // applied during the current step
-    Vec2 applied_last = Vec2::Zero();  // applied during the last step
-    Vec2 contact = Vec2::Zero();
+    double angle = 0.0;  // continuous angle (planar bodies)
+    Vec3 velocity_before = Vec3::Zero();
+    Vec3 force = Vec3::Zero();         // applied during the current step
+    Vec3 applied_last = Vec3::Zero();  // applied during the last step
+    Vec3 contact = Vec3::Zero();
     btVector3 linear_factor, angular_factor;
     PlanarState kinematic_state;  // kinematic bodies: as last set
   };
@@ -67,15 +79,40 @@ struct RigidWorld::Impl {
   std::vector<std::unique_ptr<btBoxShape>> ground_shapes;
   std::vector<std::unique_ptr<btRigidBody>> ground;
 
-  Impl(const Vec2& g, double m) : margin(m), gravity(g) { world.setGravity(v3(g)); }
+  Impl(const Vec3& g, double m) : margin(m), gravity(g) { world.setGravity(v3(g)); }
+  // The body's rigid object from its shape, start transform, mass and principal inertia; added to the world.
+  void add(Body&& b, const btTransform& start, double friction, double restitution, const btVector3& inertia,
+           bool kinematic);
   ~Impl() {
     for (auto& b : bodies) world.removeRigidBody(b.rigid.get());
     for (auto& g : ground) world.removeRigidBody(g.get());
   }
 };
 
-RigidWorld::RigidWorld(const Vec2& gravity, double margin) : impl_(std::make_unique<Impl>(gravity, margin)) {
+RigidWorld::RigidWorld(const Vec2& gravity, double margin)
+    : impl_(std::make_unique<Impl>(Vec3(gravity[0], gravity[1], 0.0), margin)) {
   if (!(margin > 0.0)) throw std::invalid_argument("collision margin must be positive");
+}
+RigidWorld::RigidWorld(const Vec3& gravity, double margin) : impl_(std::make_unique<Impl>(gravity, margin)) {
+  if (!(margin > 0.0)) throw std::invalid_argument("collision margin must be positive");
+}
+
+void RigidWorld::Impl::add(Body&& b, const btTransform& start, double friction, double restitution,
+                           const btVector3& inertia, bool kinematic) {
+  b.motion = std::make_unique<btDefaultMotionState>(start);
+  btRigidBody::btRigidBodyConstructionInfo info(kinematic ? 0.0 : b.mass, b.motion.get(), b.shape.get(),
+                                                kinematic ? btVector3(0, 0, 0) : inertia);
+  info.m_friction = friction;
+  info.m_restitution = restitution;
+  info.m_linearDamping = 0.0;
+  info.m_angularDamping = 0.0;
+  b.rigid = std::make_unique<btRigidBody>(info);
+  b.rigid->setActivationState(DISABLE_DEACTIVATION);  // a slide at rest must wake when released
+  if (kinematic) b.rigid->setCollisionFlags(b.rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+  b.rigid->setLinearFactor(b.linear_factor);
+  b.rigid->setAngularFactor(b.angular_factor);
+  world.addRigidBody(b.rigid.get());
+  bodies.push_back(std::move(b));
 }
 RigidWorld::~RigidWorld() = default;
 
@@ -91,6 +128,7 @@ int RigidWorld::add_body(const BodySpec& spec_in) {
     throw std::invalid_argument("a body needs a positive mass and inertia");
   Impl::Body b;
   b.spec = spec;
+  b.mass = spec.mass;
   const Vec2 c = centroid(spec.outline);
   b.shape = std::make_unique<btConvexHullShape>();
   for (const Vec2& p : inset(spec.outline, impl_->margin)) {
@@ -102,27 +140,77 @@ int RigidWorld::add_body(const BodySpec& spec_in) {
   btTransform start;
   start.setIdentity();
   start.setOrigin(btVector3(c[0], c[1], 0.0));
-  b.motion = std::make_unique<btDefaultMotionState>(start);
-  const double mass = spec.kinematic ? 0.0 : spec.mass;
-  // Inertia about x and y is irrelevant under the planar constraint but must be positive.
-  const btVector3 inertia(spec.inertia, spec.inertia, spec.inertia);
-  btRigidBody::btRigidBodyConstructionInfo info(mass, b.motion.get(), b.shape.get(),
-                                                spec.kinematic ? btVector3(0, 0, 0) : inertia);
-  info.m_friction = spec.friction;
-  info.m_restitution = spec.restitution;
-  info.m_linearDamping = 0.0;
-  info.m_angularDamping = 0.0;
-  b.rigid = std::make_unique<btRigidBody>(info);
-  b.rigid->setActivationState(DISABLE_DEACTIVATION);  // a slide at rest must wake when released
-  if (spec.kinematic) b.rigid->setCollisionFlags(b.rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
   b.linear_factor = btVector3(spec.locked[0] ? 0 : 1, spec.locked[1] ? 0 : 1, 0);
   b.angular_factor = btVector3(0, 0, spec.locked[2] ? 0 : 1);
-  b.rigid->setLinearFactor(b.linear_factor);
-  b.rigid->setAngularFactor(b.angular_factor);
   b.kinematic_state.position = c;
-  impl_->world.addRigidBody(b.rigid.get());
-  impl_->bodies.push_back(std::move(b));
+  // Inertia about x and y is irrelevant under the planar constraint but must be positive.
+  impl_->add(std::move(b), start, spec.friction, spec.restitution, btVector3(spec.inertia, spec.inertia, spec.inertia),
+             spec.kinematic);
   return static_cast<int>(impl_->bodies.size() - 1);
+}
+
+int RigidWorld::add_solid(const SolidSpec& spec) {
+  impl_->record(Op::add_solid, {double(spec.locked[0]), double(spec.locked[1]), double(spec.locked[2]),
+                                double(spec.locked[3]), double(spec.locked[4]), double(spec.locked[5]), spec.mass,
+                                spec.friction, spec.restitution, spec.centre_of_mass[0], spec.centre_of_mass[1],
+                                spec.centre_of_mass[2]});
+  impl_->journal.insert(impl_->journal.end(), spec.inertia.data(), spec.inertia.data() + 9);
+  impl_->journal.push_back(double(spec.hull.vertices.size()));
+  for (const Vec3& p : spec.hull.vertices) impl_->journal.insert(impl_->journal.end(), {p[0], p[1], p[2]});
+  impl_->journal.push_back(double(spec.hull.triangles.size()));
+  for (const auto& t : spec.hull.triangles) impl_->journal.insert(impl_->journal.end(), {double(t[0]), double(t[1]), double(t[2])});
+  if (!(spec.mass > 0.0)) throw std::invalid_argument("a body needs a positive mass");
+  // The principal axes: Bullet takes a diagonal inertia in the body's frame.
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d principal(spec.inertia(0, 0), spec.inertia(1, 1), spec.inertia(2, 2));
+  const bool diagonal = spec.inertia(0, 1) == 0.0 && spec.inertia(0, 2) == 0.0 && spec.inertia(1, 2) == 0.0;
+  if (!diagonal) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig{Eigen::Matrix3d(spec.inertia)};
+    axes = eig.eigenvectors();
+    if (axes.determinant() < 0.0) axes.col(2) *= -1.0;
+    principal = eig.eigenvalues();
+  }
+  if (!(principal.minCoeff() > 0.0)) throw std::invalid_argument("a body needs a positive inertia tensor");
+  Impl::Body b;
+  b.planar = false;
+  b.mass = spec.mass;
+  const btMatrix3x3 basis(axes(0, 0), axes(0, 1), axes(0, 2), axes(1, 0), axes(1, 1), axes(1, 2), axes(2, 0),
+                          axes(2, 1), axes(2, 2));
+  btQuaternion to_principal;
+  basis.getRotation(to_principal);
+  if (!diagonal) b.principal_to_placed = to_principal.inverse();
+  b.shape = std::make_unique<btConvexHullShape>();
+  const btMatrix3x3 to_body = basis.transpose();
+  for (const Vec3& p : inset_convex(spec.hull, impl_->margin))
+    b.shape->addPoint(to_body * v3(Vec3(p - spec.centre_of_mass)), false);
+  b.shape->recalcLocalAabb();
+  b.shape->setMargin(impl_->margin);
+  btTransform start;
+  start.setIdentity();
+  start.setOrigin(v3(spec.centre_of_mass));
+  start.setBasis(basis);
+  b.linear_factor = btVector3(spec.locked[0] ? 0 : 1, spec.locked[1] ? 0 : 1, spec.locked[2] ? 0 : 1);
+  b.angular_factor = btVector3(spec.locked[3] ? 0 : 1, spec.locked[4] ? 0 : 1, spec.locked[5] ? 0 : 1);
+  impl_->add(std::move(b), start, spec.friction, spec.restitution, btVector3(principal[0], principal[1], principal[2]),
+             false);
+  return static_cast<int>(impl_->bodies.size() - 1);
+}
+
+void RigidWorld::add_static_box(const Vec3& lo, const Vec3& hi, double friction, double restitution) {
+  impl_->record(Op::add_static_box, {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2], friction, restitution});
+  const Vec3 half = 0.5 * (hi - lo);
+  if (!(half.minCoeff() > 0.0)) throw std::invalid_argument("a static box needs a positive size");
+  auto shape = std::make_unique<btBoxShape>(v3(half));
+  shape->setMargin(std::min(impl_->margin, 0.25 * half.minCoeff()));
+  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape.get());
+  info.m_startWorldTransform.setIdentity();
+  info.m_startWorldTransform.setOrigin(v3(Vec3(0.5 * (lo + hi))));
+  info.m_friction = friction;
+  info.m_restitution = restitution;
+  auto body = std::make_unique<btRigidBody>(info);
+  impl_->world.addRigidBody(body.get());
+  impl_->ground_shapes.push_back(std::move(shape));
+  impl_->ground.push_back(std::move(body));
 }
 
 void RigidWorld::add_static_segment(const Vec2& a, const Vec2& b, const Vec2& into_solid, double thickness,
@@ -155,6 +243,7 @@ std::size_t RigidWorld::size() const { return impl_->bodies.size(); }
 
 PlanarState RigidWorld::state(int i) const {
   const auto& b = impl_->bodies.at(i);
+  if (!b.planar) throw std::logic_error("the planar state of a solid body");
   if (b.spec.kinematic) return b.kinematic_state;
   const btTransform& tr = b.rigid->getWorldTransform();
   PlanarState s;
@@ -166,7 +255,28 @@ PlanarState RigidWorld::state(int i) const {
   return s;
 }
 
-double RigidWorld::mass(int i) const { return impl_->bodies.at(i).spec.mass; }
+SpatialState RigidWorld::spatial_state(int i) const {
+  const auto& b = impl_->bodies.at(i);
+  if (b.planar) {
+    const PlanarState p = state(i);
+    SpatialState s;
+    s.position = Vec3(p.position[0], p.position[1], 0.0);
+    s.orientation = Quat(Eigen::AngleAxisd(p.angle, Eigen::Vector3d::UnitZ()));
+    s.velocity = Vec3(p.velocity[0], p.velocity[1], 0.0);
+    s.angular_velocity = Vec3(0.0, 0.0, p.angular_velocity);
+    return s;
+  }
+  const btTransform& tr = b.rigid->getWorldTransform();
+  const btQuaternion q = tr.getRotation() * b.principal_to_placed;
+  SpatialState s;
+  s.position = from_bt(tr.getOrigin());
+  s.orientation = Quat(q.w(), q.x(), q.y(), q.z());
+  s.velocity = from_bt(b.rigid->getLinearVelocity());
+  s.angular_velocity = from_bt(b.rigid->getAngularVelocity());
+  return s;
+}
+
+double RigidWorld::mass(int i) const { return impl_->bodies.at(i).mass; }
 double RigidWorld::inertia(int i) const { return impl_->bodies.at(i).spec.inertia; }
 
 void RigidWorld::set_held(int i, bool held) {
@@ -186,7 +296,7 @@ void RigidWorld::set_kinematic_state(int i, const PlanarState& s) {
   impl_->record(Op::set_kinematic_state, {double(i), s.position[0], s.position[1], s.angle, s.velocity[0],
                                           s.velocity[1], s.angular_velocity});
   auto& b = impl_->bodies.at(i);
-  if (!b.spec.kinematic) throw std::logic_error("set_kinematic_state on a dynamic body");
+  if (!b.planar || !b.spec.kinematic) throw std::logic_error("set_kinematic_state on a dynamic or solid body");
   btTransform tr;
   tr.setIdentity();
   tr.setOrigin(btVector3(s.position[0], s.position[1], 0.0));
@@ -199,15 +309,28 @@ void RigidWorld::set_kinematic_state(int i, const PlanarState& s) {
   b.kinematic_state = s;
 }
 
+namespace {
+void move_by(btRigidBody& rigid, btMotionState& motion, const btVector3& delta) {
+  btTransform tr = rigid.getWorldTransform();
+  tr.setOrigin(tr.getOrigin() + delta);
+  rigid.setWorldTransform(tr);
+  rigid.setCenterOfMassTransform(tr);
+  motion.setWorldTransform(tr);
+}
+}  // namespace
+
 void RigidWorld::translate(int i, const Vec2& delta) {
   impl_->record(Op::translate, {double(i), delta[0], delta[1]});
   auto& b = impl_->bodies.at(i);
-  btTransform tr = b.rigid->getWorldTransform();
-  tr.setOrigin(tr.getOrigin() + v3(delta));
-  b.rigid->setWorldTransform(tr);
-  b.rigid->setCenterOfMassTransform(tr);
-  b.motion->setWorldTransform(tr);
+  move_by(*b.rigid, *b.motion, v3(delta));
   b.kinematic_state.position += delta;
+}
+
+void RigidWorld::translate(int i, const Vec3& delta) {
+  impl_->record(Op::translate_3d, {double(i), delta[0], delta[1], delta[2]});
+  auto& b = impl_->bodies.at(i);
+  if (b.planar) throw std::logic_error("a 3-D translation of a planar body");
+  move_by(*b.rigid, *b.motion, v3(delta));
 }
 
 void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_velocity) {
@@ -217,41 +340,61 @@ void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_veloci
   b.rigid->setAngularVelocity(btVector3(0, 0, angular_velocity));
 }
 
+void RigidWorld::set_velocity(int i, const Vec3& velocity, const Vec3& angular_velocity) {
+  impl_->record(Op::set_velocity_3d, {double(i), velocity[0], velocity[1], velocity[2], angular_velocity[0],
+                                      angular_velocity[1], angular_velocity[2]});
+  auto& b = impl_->bodies.at(i);
+  if (b.planar) throw std::logic_error("a 3-D velocity of a planar body");
+  b.rigid->setLinearVelocity(v3(velocity));
+  b.rigid->setAngularVelocity(v3(angular_velocity));
+}
+
 void RigidWorld::apply_force(int i, const Vec2& force, double torque) {
   auto& b = impl_->bodies.at(i);
   if (b.spec.kinematic) return;
   impl_->record(Op::apply_force, {double(i), force[0], force[1], torque});
   b.rigid->applyCentralForce(v3(force));
   b.rigid->applyTorque(btVector3(0, 0, torque));
+  b.force += Vec3(force[0], force[1], 0.0);
+}
+
+void RigidWorld::apply_force(int i, const Vec3& force, const Vec3& torque) {
+  auto& b = impl_->bodies.at(i);
+  if (b.planar) throw std::logic_error("a 3-D force on a planar body");
+  impl_->record(Op::apply_force_3d, {double(i), force[0], force[1], force[2], torque[0], torque[1], torque[2]});
+  b.rigid->applyCentralForce(v3(force));
+  b.rigid->applyTorque(v3(torque));
   b.force += force;
 }
 
 void RigidWorld::step(double dt) {
   impl_->record(Op::step, {dt});
-  for (auto& b : impl_->bodies) {
-    const btVector3 v = b.rigid->getLinearVelocity();
-    b.velocity_before = Vec2(v.x(), v.y());
-  }
+  for (auto& b : impl_->bodies) b.velocity_before = from_bt(b.rigid->getLinearVelocity());
   // maxSubSteps = 0: one step of exactly dt, no fixed-step interpolation (DESIGN.md pitfalls).
   impl_->world.stepSimulation(dt, 0, dt);
   for (auto& b : impl_->bodies) {
     // Continuous angle: add the wrapped change of the quaternion's angle.
-    const double a = z_angle(b.rigid->getWorldTransform().getRotation());
-    if (!b.spec.kinematic) b.angle += std::remainder(a - b.angle, 2.0 * M_PI);
+    if (b.planar && !b.spec.kinematic) {
+      const double a = z_angle(b.rigid->getWorldTransform().getRotation());
+      b.angle += std::remainder(a - b.angle, 2.0 * M_PI);
+    }
     b.applied_last = b.force;
-    b.force = Vec2::Zero();
+    b.force = Vec3::Zero();
     if (b.spec.kinematic) {
-      b.contact = Vec2::Zero();
+      b.contact = Vec3::Zero();
       continue;
     }
-    const btVector3 v = b.rigid->getLinearVelocity();
-    const Vec2 dv = Vec2(v.x(), v.y()) - b.velocity_before;
-    b.contact = b.spec.mass * dv / dt - b.spec.mass * impl_->gravity - b.applied_last;
+    const Vec3 dv = from_bt(b.rigid->getLinearVelocity()) - b.velocity_before;
+    b.contact = b.mass * dv / dt - b.mass * impl_->gravity - b.applied_last;
   }
   impl_->world.clearForces();
 }
 
-Vec2 RigidWorld::contact_force(int i) const { return impl_->bodies.at(i).contact; }
+Vec2 RigidWorld::contact_force(int i) const {
+  const Vec3& c = impl_->bodies.at(i).contact;
+  return Vec2(c[0], c[1]);
+}
+Vec3 RigidWorld::contact_force_3d(int i) const { return impl_->bodies.at(i).contact; }
 
 const std::vector<double>& RigidWorld::journal() const { return impl_->journal; }
 
@@ -265,6 +408,10 @@ void RigidWorld::replay(const std::vector<double>& journal) {
   auto vec = [&]() {
     const double x = next();
     return Vec2(x, next());
+  };
+  auto vec3 = [&]() {
+    const double x = next(), y = next();
+    return Vec3(x, y, next());
   };
   while (at < journal.size()) {
     switch (static_cast<Op>(static_cast<int>(next()))) {
@@ -317,6 +464,47 @@ void RigidWorld::replay(const std::vector<double>& journal) {
         const int i = static_cast<int>(next());
         const Vec2 f = vec();
         apply_force(i, f, next());
+        break;
+      }
+      case Op::add_solid: {
+        SolidSpec spec;
+        for (bool& l : spec.locked) l = next() != 0.0;
+        spec.mass = next();
+        spec.friction = next();
+        spec.restitution = next();
+        spec.centre_of_mass = vec3();
+        for (int k = 0; k < 9; ++k) spec.inertia.data()[k] = next();
+        const auto n = static_cast<std::size_t>(next());
+        for (std::size_t k = 0; k < n; ++k) spec.hull.vertices.push_back(vec3());
+        const auto m = static_cast<std::size_t>(next());
+        for (std::size_t k = 0; k < m; ++k) {
+          const int a = static_cast<int>(next()), b = static_cast<int>(next());
+          spec.hull.triangles.push_back({a, b, static_cast<int>(next())});
+        }
+        add_solid(spec);
+        break;
+      }
+      case Op::add_static_box: {
+        const Vec3 lo = vec3(), hi = vec3();
+        const double friction = next();
+        add_static_box(lo, hi, friction, next());
+        break;
+      }
+      case Op::translate_3d: {
+        const int i = static_cast<int>(next());
+        translate(i, vec3());
+        break;
+      }
+      case Op::set_velocity_3d: {
+        const int i = static_cast<int>(next());
+        const Vec3 v = vec3();
+        set_velocity(i, v, vec3());
+        break;
+      }
+      case Op::apply_force_3d: {
+        const int i = static_cast<int>(next());
+        const Vec3 f = vec3();
+        apply_force(i, f, vec3());
         break;
       }
       case Op::step: step(next()); break;

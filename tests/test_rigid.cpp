@@ -46,7 +46,7 @@ TEST(Rigid, PolygonPropertiesMatchClosedForms) {
 }
 
 TEST(Rigid, FreeFlightKeepsVelocityAndSpin) {
-  RigidWorld w(Vec2::Zero(), 1e-3);
+  RigidWorld w(Vec2(0.0, 0.0), 1e-3);
   const int b = w.add_body(box_body(Vec2(0.0, 0.0), 0.2, 0.1, 800.0));
   w.set_velocity(b, Vec2(1.5, -0.5), 2.0);
   const double dt = 1e-3;

@@ -1,0 +1,115 @@
+#pragma once
+// Closed triangle surfaces (a solid body's boundary in 3-D): volume, centre of mass and inertia tensor of the solid they
+// enclose, by the divergence theorem over the triangles (each triangle with the origin makes a signed tetrahedron;
+// the sums of the tetrahedra's integrals are the solid's: Tonon, "Explicit exact formulas for the 3-D tetrahedron
+// inertia tensor in terms of its vertex coordinates", J. Math. Stat. 1 (2005) 8-11). Triangles run counter-clockwise
+// seen from outside (normals outward); the solid's volume is then positive.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace slide::rigid {
+
+using Vec3 = Eigen::Matrix<double, 3, 1, Eigen::DontAlign>;
+using Mat3 = Eigen::Matrix<double, 3, 3, Eigen::DontAlign>;
+
+struct TriangleSurface {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
+};
+
+struct MassProperties {
+  double volume = 0.0;            // m^3
+  Vec3 centroid = Vec3::Zero();   // m
+  Mat3 inertia = Mat3::Zero();    // about the centroid, per unit density (m^5): multiply by the density for kg m^2
+};
+
+// For a tetrahedron (0, a, b, c) of signed volume V = a . (b x c) / 6, the integrals over it are
+//   int x_i x_j dV = V/20 (sum_k p_k,i p_k,j + (sum_k p_k,i)(sum_k p_k,j)) over its vertices p_k (the origin adds 0),
+// and the inertia about the origin I = tr(S) 1 - S with S_ij = int x_i x_j dV. Summed over the surface's triangles,
+// then moved to the centroid by the parallel-axis theorem: I_c = I_o - V (|c|^2 1 - c c^T).
+// The sums are taken about the vertices' mean rather than the origin: far from the origin they would cancel.
+inline MassProperties mass_properties(const TriangleSurface& s) {
+  MassProperties m;
+  Vec3 origin = Vec3::Zero();
+  for (const Vec3& v : s.vertices) origin += v;
+  origin /= double(std::max<std::size_t>(1, s.vertices.size()));
+  Mat3 second = Mat3::Zero();  // S about the origin
+  Vec3 first = Vec3::Zero();   // int x dV
+  for (const auto& t : s.triangles) {
+    const Vec3 a = s.vertices[t[0]] - origin, b = s.vertices[t[1]] - origin, c = s.vertices[t[2]] - origin;
+    const double v = a.dot(b.cross(c)) / 6.0;
+    m.volume += v;
+    const Vec3 sum = a + b + c;
+    first += v * sum / 4.0;
+    second += (v / 20.0) * (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
+  }
+  if (!(m.volume > 0.0)) throw std::invalid_argument("a closed surface with no positive volume (inward normals?)");
+  m.centroid = first / m.volume;
+  const Mat3 about_origin = second.trace() * Mat3::Identity() - second;
+  const Vec3& c = m.centroid;
+  m.inertia = about_origin - m.volume * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
+  m.centroid += origin;
+  return m;
+}
+
+inline Vec3 outward_normal(const TriangleSurface& s, const std::array<int, 3>& t) {
+  return Vec3((s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).normalized());
+}
+
+// A convex surface's vertices moved inwards by `margin`: each vertex by the smallest displacement d with n . d =
+// -margin for the outward normal n of every face it touches (exact where three faces meet; the least-squares
+// compromise where more do). Bullet adds its collision margin around a convex hull, so this hull with the margin
+// collides at the true surface, its edges rounded. Throws std::invalid_argument where an inset vertex does not lie
+// `margin` inside every face (the body is too thin for the margin).
+inline std::vector<Vec3> inset_convex(const TriangleSurface& s, double margin) {
+  std::vector<std::vector<Vec3>> normals(s.vertices.size());
+  for (const auto& t : s.triangles) {
+    const Vec3 n = outward_normal(s, t);
+    for (const int v : t) {
+      bool known = false;
+      for (const Vec3& m : normals[v]) known = known || m.dot(n) > 1.0 - 1e-9;
+      if (!known) normals[v].push_back(n);
+    }
+  }
+  std::vector<Vec3> out;
+  for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+    if (normals[v].empty()) continue;
+    Eigen::MatrixXd A(normals[v].size(), 3);
+    for (std::size_t k = 0; k < normals[v].size(); ++k) A.row(Eigen::Index(k)) = normals[v][k].transpose();
+    const Eigen::VectorXd rhs = Eigen::VectorXd::Constant(A.rows(), -margin);
+    const Eigen::Vector3d d = A.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(rhs);
+    out.push_back(s.vertices[v] + Vec3(d));
+  }
+  for (const auto& t : s.triangles) {
+    const Vec3 n = outward_normal(s, t);
+    for (const Vec3& p : out)
+      if (n.dot(p - s.vertices[t[0]]) > -margin * (1.0 - 1e-6))
+        throw std::invalid_argument("a body too thin for the collision margin");
+  }
+  return out;
+}
+
+// A box of the given edge lengths centred at `centre`, its edges along the columns of `axes` (a rotation), as twelve
+// outward triangles.
+inline TriangleSurface box_surface(const Vec3& centre, const Vec3& size, const Mat3& axes = Mat3::Identity()) {
+  TriangleSurface s;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1 ? 0.5 : -0.5) * size[0], (k & 2 ? 0.5 : -0.5) * size[1], (k & 4 ? 0.5 : -0.5) * size[2]);
+    s.vertices.push_back(centre + axes * corner);
+  }
+  // Corner k has bit 0 for +x, bit 1 for +y, bit 2 for +z; each face as two triangles, counter-clockwise from outside.
+  s.triangles = {{0, 2, 3}, {0, 3, 1},   // -z
+                 {4, 5, 7}, {4, 7, 6},   // +z
+                 {0, 1, 5}, {0, 5, 4},   // -y
+                 {2, 6, 7}, {2, 7, 3},   // +y
+                 {0, 4, 6}, {0, 6, 2},   // -x
+                 {1, 3, 7}, {1, 7, 5}};  // +x
+  return s;
+}
+
+}  // namespace slide::rigid

@@ -1,0 +1,208 @@
+// rigid/: solid bodies in six degrees of freedom (3-D scenes) and closed surfaces' mass properties, against closed
+// forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rigid/polyhedron.hpp"
+#include "rigid/rigid_world.hpp"
+
+namespace slide::rigid {
+namespace {
+
+Mat3 rotation_about(const Vec3& axis, double angle) {
+  return Mat3(Eigen::AngleAxisd(angle, Eigen::Vector3d(axis).normalized()).toRotationMatrix());
+}
+
+// A box solid of the given density: hull, centre, mass, inertia from its surface.
+SolidSpec box_solid(const Vec3& centre, const Vec3& size, double density, const Mat3& axes = Mat3::Identity()) {
+  const TriangleSurface s = box_surface(centre, size, axes);
+  const MassProperties m = mass_properties(s);
+  SolidSpec spec;
+  spec.hull = s;
+  spec.centre_of_mass = m.centroid;
+  spec.mass = density * m.volume;
+  spec.inertia = density * m.inertia;
+  return spec;
+}
+
+TEST(SolidBody, BoxMassPropertiesMatchClosedForms) {
+  const Vec3 size(0.4, 0.2, 0.1);
+  const MassProperties m = mass_properties(box_surface(Vec3(1.0, -2.0, 0.5), size));
+  EXPECT_NEAR(m.volume, 0.008, 1e-16);
+  EXPECT_NEAR((m.centroid - Vec3(1.0, -2.0, 0.5)).norm(), 0.0, 1e-14);
+  // I_xx = V (b^2 + c^2) / 12, and so on; no products of inertia along the box's axes.
+  // (to rounding: 1e-12 of the largest moment, 1.3e-4 m^5)
+  EXPECT_NEAR(m.inertia(0, 0), 0.008 * (0.04 + 0.01) / 12.0, 1e-16);
+  EXPECT_NEAR(m.inertia(1, 1), 0.008 * (0.16 + 0.01) / 12.0, 1e-16);
+  EXPECT_NEAR(m.inertia(2, 2), 0.008 * (0.16 + 0.04) / 12.0, 1e-16);
+  EXPECT_NEAR(m.inertia(0, 1), 0.0, 1e-16);
+  EXPECT_NEAR(m.inertia(1, 2), 0.0, 1e-16);
+  // Turned, the tensor turns with it: R I R^T.
+  const Mat3 R = rotation_about(Vec3(1.0, 2.0, 3.0), 0.7);
+  const MassProperties turned = mass_properties(box_surface(Vec3::Zero(), size, R));
+  EXPECT_NEAR((turned.inertia - R * m.inertia * R.transpose()).norm(), 0.0, 1e-16);
+  EXPECT_NEAR(turned.volume, 0.008, 1e-16);
+}
+
+// The tetrahedron (0, e_x, e_y, e_z): V = 1/6, centroid (1/4, 1/4, 1/4); int x^2 dV = 1/60, int x y dV = 1/120, so
+// about the centroid I_xx = 1/30 - V (1/16 + 1/16) = 1/80 and I_xy = -1/120 + V / 16 = 1/480.
+TEST(SolidBody, TetrahedronMassPropertiesMatchClosedForms) {
+  TriangleSurface t;
+  t.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  t.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const MassProperties m = mass_properties(t);
+  EXPECT_NEAR(m.volume, 1.0 / 6.0, 1e-15);
+  EXPECT_NEAR((m.centroid - Vec3(0.25, 0.25, 0.25)).norm(), 0.0, 1e-15);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(m.inertia(i, i), 1.0 / 80.0, 1e-15);
+    EXPECT_NEAR(m.inertia(i, (i + 1) % 3), 1.0 / 480.0, 1e-15);
+  }
+  // Inward triangles are refused.
+  for (auto& tri : t.triangles) std::swap(tri[1], tri[2]);
+  EXPECT_THROW(mass_properties(t), std::invalid_argument);
+}
+
+TEST(SolidBody, FreeFlightKeepsVelocityAndSpinAboutAPrincipalAxis) {
+  RigidWorld w(Vec3(0.0, 0.0, 0.0), 1e-3);
+  const int b = w.add_solid(box_solid(Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.1, 0.05), 800.0));
+  w.set_velocity(b, Vec3(1.5, -0.5, 0.25), Vec3(0.0, 0.0, 2.0));
+  const double dt = 1e-3;
+  const int steps = 1000;
+  for (int k = 0; k < steps; ++k) w.step(dt);
+  const SpatialState s = w.spatial_state(b);
+  const double t = steps * dt;
+  EXPECT_NEAR((s.position - (Vec3(0.1, 0.2, 0.3) + t * Vec3(1.5, -0.5, 0.25))).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((s.velocity - Vec3(1.5, -0.5, 0.25)).norm(), 0.0, 1e-12);
+  const Eigen::AngleAxisd turned{Eigen::Quaterniond(s.orientation)};
+  EXPECT_NEAR(turned.angle(), 2.0 * t, 1e-9);
+  EXPECT_NEAR(std::abs(turned.axis()[2]), 1.0, 1e-9);
+}
+
+// Torque-free motion about a non-principal axis: the angular momentum R I_0 R^T omega is conserved in world axes
+// (Bullet's implicit gyroscopic term), and the kinetic energy with it to the integrator's accuracy.
+TEST(SolidBody, TorqueFreeTumblingConservesAngularMomentum) {
+  RigidWorld w(Vec3(0.0, 0.0, 0.0), 1e-3);
+  const SolidSpec spec = box_solid(Vec3::Zero(), Vec3(0.3, 0.2, 0.1), 1000.0);
+  const int b = w.add_solid(spec);
+  const Vec3 omega0(0.5, 3.0, 0.2);  // near the intermediate axis: it tumbles
+  w.set_velocity(b, Vec3::Zero(), omega0);
+  const Vec3 L0 = spec.inertia * omega0;
+  const double E0 = 0.5 * omega0.dot(spec.inertia * omega0);
+  double worst_L = 0.0, worst_E = 0.0;
+  for (int k = 0; k < 4000; ++k) {
+    w.step(1e-4);
+    const SpatialState s = w.spatial_state(b);
+    const Mat3 R = Eigen::Quaterniond(s.orientation).toRotationMatrix();
+    const Mat3 I = R * spec.inertia * R.transpose();
+    worst_L = std::max(worst_L, (I * s.angular_velocity - L0).norm() / L0.norm());
+    worst_E = std::max(worst_E, std::abs(0.5 * s.angular_velocity.dot(I * s.angular_velocity) - E0) / E0);
+  }
+  EXPECT_LT(worst_L, 2e-3);
+  EXPECT_LT(worst_E, 2e-3);
+}
+
+TEST(SolidBody, AppliedForceAndTorqueGiveTheirAccelerations) {
+  RigidWorld w(Vec3(0.0, 0.0, -9.81), 1e-3);
+  const SolidSpec spec = box_solid(Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 500.0);  // m = 4 kg, I = m a^2 / 6
+  const int b = w.add_solid(spec);
+  const double dt = 1e-3, I = spec.mass * 0.04 / 6.0;
+  const Vec3 force(2.0, 0.0, spec.mass * 9.81 + 1.0), torque(0.0, 0.0, 0.3);
+  for (int k = 0; k < 500; ++k) {
+    w.apply_force(b, force, torque);
+    w.step(dt);
+  }
+  const SpatialState s = w.spatial_state(b);
+  const double t = 500 * dt;
+  EXPECT_NEAR(s.velocity[0], 2.0 / spec.mass * t, 1e-12);
+  EXPECT_NEAR(s.velocity[2], 1.0 / spec.mass * t, 1e-11);
+  EXPECT_NEAR(s.angular_velocity[2], 0.3 / I * t, 1e-10);
+  // No contact: what Bullet did beyond gravity and the applied force is nothing.
+  EXPECT_NEAR(w.contact_force_3d(b).norm(), 0.0, 1e-9);
+}
+
+TEST(SolidBody, BoxSettlesOnTheFloorAndTheContactHoldsItsWeight) {
+  RigidWorld w(Vec3(0.0, 0.0, -9.81), 1e-3);
+  w.add_static_box(Vec3(-1.0, -1.0, -0.1), Vec3(1.0, 1.0, 0.0), 1.0, 0.0);
+  SolidSpec spec = box_solid(Vec3(0.0, 0.0, 0.06), Vec3(0.2, 0.1, 0.1), 500.0);
+  spec.friction = 0.5;
+  const int b = w.add_solid(spec);
+  for (int k = 0; k < 1000; ++k) w.step(1e-3);
+  const SpatialState s = w.spatial_state(b);
+  EXPECT_NEAR(s.position[2], 0.05, 2e-4);  // on the floor, within a fifth of the margin's scale
+  EXPECT_LT(s.velocity.norm(), 1e-3);
+  EXPECT_NEAR(w.contact_force_3d(b)[2], spec.mass * 9.81, 1e-3 * spec.mass * 9.81);
+}
+
+TEST(SolidBody, LockedComponentsStayPut) {
+  RigidWorld w(Vec3(0.0, 0.0, -9.81), 1e-3);
+  SolidSpec spec = box_solid(Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 500.0);
+  spec.locked = {true, true, false, true, true, true};  // heave only
+  const int b = w.add_solid(spec);
+  for (int k = 0; k < 100; ++k) {
+    w.apply_force(b, Vec3(5.0, -3.0, 0.0), Vec3(0.2, 0.1, 0.3));
+    w.step(1e-3);
+  }
+  const SpatialState s = w.spatial_state(b);
+  EXPECT_EQ(s.position[0], 0.0);
+  EXPECT_EQ(s.position[1], 0.0);
+  EXPECT_NEAR(s.position[2], -0.5 * 9.81 * 0.1 * 0.1, 1e-3);
+  EXPECT_NEAR(s.orientation.angularDistance(Quat::Identity()), 0.0, 1e-15);
+}
+
+// A body whose inertia is not diagonal in world axes runs in Bullet on its principal axes; its reported orientation
+// is still the rotation since creation.
+TEST(SolidBody, OrientationCountsFromCreationForATurnedBody) {
+  RigidWorld w(Vec3(0.0, 0.0, 0.0), 1e-3);
+  const Mat3 R = rotation_about(Vec3(1.0, 1.0, 0.0), 0.4);
+  const int b = w.add_solid(box_solid(Vec3(0.5, 0.5, 0.5), Vec3(0.3, 0.2, 0.1), 700.0, R));
+  EXPECT_NEAR(w.spatial_state(b).orientation.angularDistance(Quat::Identity()), 0.0, 1e-12);
+  EXPECT_NEAR((w.spatial_state(b).position - Vec3(0.5, 0.5, 0.5)).norm(), 0.0, 1e-14);
+  EXPECT_THROW(w.state(b), std::logic_error);  // a solid body has no planar state
+}
+
+TEST(SolidBody, JournalReplaysToTheSameBits) {
+  RigidWorld w(Vec3(0.0, 0.0, -9.81), 1e-3);
+  w.add_static_box(Vec3(-1.0, -1.0, -0.1), Vec3(1.0, 1.0, 0.0), 1.0, 0.0);
+  SolidSpec spec = box_solid(Vec3(0.0, 0.0, 0.2), Vec3(0.2, 0.1, 0.1), 500.0, rotation_about(Vec3(0, 1, 1), 0.3));
+  spec.friction = 0.4;
+  const int b = w.add_solid(spec);
+  w.set_velocity(b, Vec3(0.3, 0.1, 0.0), Vec3(1.0, -2.0, 0.5));
+  for (int k = 0; k < 300; ++k) {
+    w.apply_force(b, Vec3(0.1 * k, 0.0, 0.0), Vec3(0.0, 0.01, 0.0));
+    if (k == 100) w.translate(b, Vec3(0.0, 0.0, 0.01));
+    w.step(1e-3);
+  }
+  RigidWorld copy(Vec3(0.0, 0.0, -9.81), 1e-3);
+  copy.replay(w.journal());
+  for (int k = 0; k < 200; ++k) {
+    w.step(1e-3);
+    copy.step(1e-3);
+  }
+  const SpatialState a = w.spatial_state(b), c = copy.spatial_state(b);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(a.position[k], c.position[k]);
+    EXPECT_EQ(a.angular_velocity[k], c.angular_velocity[k]);
+  }
+  EXPECT_EQ(a.orientation.w(), c.orientation.w());
+  EXPECT_EQ(a.orientation.x(), c.orientation.x());
+}
+
+TEST(SolidBody, BadSolidsAreRefused) {
+  RigidWorld w(Vec3(0.0, 0.0, -9.81), 1e-2);
+  SolidSpec spec = box_solid(Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 500.0);
+  spec.mass = 0.0;
+  EXPECT_THROW(w.add_solid(spec), std::invalid_argument);
+  EXPECT_THROW(w.add_solid(box_solid(Vec3::Zero(), Vec3(0.015, 0.2, 0.2), 500.0)), std::invalid_argument);  // < 2 margins
+  // The inset hull of a box is the box smaller by the margin on every side.
+  const auto inset = inset_convex(box_surface(Vec3(1.0, 2.0, 3.0), Vec3(0.2, 0.1, 0.3)), 0.01);
+  ASSERT_EQ(inset.size(), 8u);
+  for (const Vec3& p : inset) {
+    EXPECT_NEAR(std::abs(p[0] - 1.0), 0.09, 1e-14);
+    EXPECT_NEAR(std::abs(p[1] - 2.0), 0.04, 1e-14);
+    EXPECT_NEAR(std::abs(p[2] - 3.0), 0.14, 1e-14);
+  }
+}
+
+}  // namespace
+}  // namespace slide::rigid
