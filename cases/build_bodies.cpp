@@ -71,8 +71,8 @@ rigid::PrescribedMotion read_motion_series(const std::filesystem::path& file, co
 }
 
 // The Bullet world, with the wall faces as static segments when bodies collide with the walls.
-std::shared_ptr<RigidBodies> make_rigid_world(const SceneBuild<2>& b) {
-  auto bodies = std::make_shared<RigidBodies>(b.sim->options.gravity,
+std::shared_ptr<RigidBodies<2>> make_rigid_world(const SceneBuild<2>& b) {
+  auto bodies = std::make_shared<RigidBodies<2>>(b.sim->options.gravity,
                                               b.r["rigid"]["collision_margin"].as<double>() * b.dp);
   if (b.r["rigid"]["wall_contact"].as<bool>())
     for (const auto& f : b.faces)

@@ -32,7 +32,7 @@ namespace {
 template <int D>
 class Settling<D>::Observer : public StepObserver<D> {
  public:
-  Observer(Relaxation& out, RigidBodies* floating, const Particles<D>& P, const std::vector<HeldPhase<D>>& held)
+  Observer(Relaxation& out, RigidBodies<D>* floating, const Particles<D>& P, const std::vector<HeldPhase<D>>& held)
       : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(P.real_count()) {
     for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
     for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
@@ -52,7 +52,7 @@ class Settling<D>::Observer : public StepObserver<D> {
 
  private:
   Relaxation& out_;
-  RigidBodies* floating_;
+  RigidBodies<D>* floating_;
   std::vector<bool> held_;
   std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
   std::vector<Vec<D>> start_;  // by id

@@ -100,7 +100,7 @@ class Settling {
   Simulation<D>& sim_;
   Relaxation out_;
   std::vector<Vec<D>> start_;  // real particles' positions as built, by id
-  std::shared_ptr<RigidBodies> bodies_;
+  std::shared_ptr<RigidBodies<D>> bodies_;
   bool floating_ = false;
   double saved_damping_rate_ = 0.0;
   std::unique_ptr<Observer> observer_;

@@ -9,19 +9,82 @@
 namespace slide {
 
 namespace {
-double cross2(const Vec<2>& a, const Vec<2>& b) { return a[0] * b[1] - a[1] * b[0]; }
 Vec<2> rotate(const Vec<2>& v, double c, double s) { return Vec<2>(c * v[0] - s * v[1], s * v[0] + c * v[1]); }
+
+// A body's rigid motion at one placement: where a point at offset r0 (body frame, as created) is, how fast it goes
+// and how it accelerates, given the body's state and its mean linear and angular accelerations since the last one.
+template <int D>
+struct RigidField;
+
+template <>
+struct RigidField<2> {
+  rigid::PlanarState s;
+  double c = 1.0, sn = 0.0;
+  Vec<2> linear_acceleration = Vec<2>::Zero();
+  double angular_acceleration = 0.0;
+  RigidField() = default;
+  RigidField(const rigid::PlanarState& now, const rigid::PlanarState* before, double span)
+      : s(now), c(std::cos(now.angle)), sn(std::sin(now.angle)) {
+    if (!before) return;
+    linear_acceleration = Vec<2>(s.velocity[0] - before->velocity[0], s.velocity[1] - before->velocity[1]) / span;
+    angular_acceleration = (s.angular_velocity - before->angular_velocity) / span;
+  }
+  Vec<2> turned(const Vec<2>& v) const { return rotate(v, c, sn); }
+  // x = X + r, v = V + omega x r (in 2-D omega (-r_y, r_x)), a = A + alpha x r - omega^2 r.
+  void place(const Vec<2>& r0, Vec<2>& x, Vec<2>& v, Vec<2>& a) const {
+    const Vec<2> r = turned(r0);
+    const double omega = s.angular_velocity;
+    x = Vec<2>(s.position[0], s.position[1]) + r;
+    v = Vec<2>(s.velocity[0], s.velocity[1]) + omega * Vec<2>(-r[1], r[0]);
+    a = linear_acceleration + angular_acceleration * Vec<2>(-r[1], r[0]) - (omega * omega) * r;
+  }
+};
+
+template <>
+struct RigidField<3> {
+  rigid::SpatialState s;
+  Mat<3> R = Mat<3>::Identity();
+  Vec<3> linear_acceleration = Vec<3>::Zero(), angular_acceleration = Vec<3>::Zero();
+  RigidField() = default;
+  RigidField(const rigid::SpatialState& now, const rigid::SpatialState* before, double span)
+      : s(now), R(now.orientation.toRotationMatrix()) {
+    if (!before) return;
+    linear_acceleration = (s.velocity - before->velocity) / span;
+    angular_acceleration = (s.angular_velocity - before->angular_velocity) / span;
+  }
+  Vec<3> turned(const Vec<3>& v) const { return R * v; }
+  // x = X + R r0, v = V + omega x r, a = A + alpha x r + omega x (omega x r).
+  void place(const Vec<3>& r0, Vec<3>& x, Vec<3>& v, Vec<3>& a) const {
+    const Vec<3> r = turned(r0);
+    const Vec<3> w = s.angular_velocity;
+    x = s.position + r;
+    v = s.velocity + w.cross(r);
+    a = linear_acceleration + angular_acceleration.cross(r) + w.cross(Vec<3>(w.cross(r)));
+  }
+};
+
+template <int D>
+Vec<D> centre_of(const BodyState<D>& s) {
+  if constexpr (D == 2) return Vec<2>(s.position[0], s.position[1]);
+  else return s.position;
+}
 }  // namespace
 
-int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const BodyMotion& m, double body_density,
-                     double placed_angle_rad) {
-  const int b = world.add_body(spec);
-  const auto centre = world.state(b).position;
-  std::vector<Vec<2>> local;
-  for (const auto& v : rigid::counter_clockwise(spec.outline)) local.emplace_back(v[0] - centre[0], v[1] - centre[1]);
-  outline_.push_back(std::move(local));
+template <int D>
+int RigidBodies<D>::add(const std::string& name, const BodySpecOf<D>& spec, const BodyMotion& m, double body_density,
+                        const Placement<D>& placed_at) {
+  int b = 0;
+  if constexpr (D == 2) {
+    b = world.add_body(spec);
+    const auto centre = world.state(b).position;
+    std::vector<Vec<2>> local;
+    for (const auto& v : rigid::counter_clockwise(spec.outline)) local.emplace_back(v[0] - centre[0], v[1] - centre[1]);
+    outline_.push_back(std::move(local));
+  } else {
+    b = world.add_solid(spec);
+  }
   names.push_back(name);
-  placed_angle.push_back(placed_angle_rad);
+  placed.push_back(placed_at);
   motion.push_back(m);
   force.emplace_back();
   pending_.emplace_back();
@@ -31,77 +94,63 @@ int RigidBodies::add(const std::string& name, const rigid::BodySpec& spec, const
   return b;
 }
 
-void RigidBodies::place_particles(Particles<2>& P, double time) {
-  for (std::size_t b = 0; b < size(); ++b)
-    if (motion[b].mode == BodyMotion::Mode::prescribed)
-      world.set_kinematic_state(int(b), motion[b].prescribed->at(settling_ ? 0.0 : time));
-  std::vector<rigid::PlanarState> s(size());
-  std::vector<double> c(size()), sn(size());
-  std::vector<Vec<2>> linear_acceleration(size(), Vec<2>::Zero());
-  std::vector<double> angular_acceleration(size(), 0.0);
+template <int D>
+void RigidBodies<D>::place_particles(Particles<D>& P, double time) {
+  if constexpr (D == 2) {
+    for (std::size_t b = 0; b < size(); ++b)
+      if (motion[b].mode == BodyMotion::Mode::prescribed)
+        world.set_kinematic_state(int(b), motion[b].prescribed->at(settling_ ? 0.0 : time));
+  }
+  std::vector<BodyState<D>> s(size());
+  std::vector<RigidField<D>> field(size());
   const bool have_previous = placed_state_.size() == size() && time > placed_time_;
   for (std::size_t b = 0; b < size(); ++b) {
-    s[b] = world.state(int(b));
-    c[b] = std::cos(s[b].angle);
-    sn[b] = std::sin(s[b].angle);
-    if (have_previous) {
-      const double span = time - placed_time_;
-      const auto& before = placed_state_[b];
-      linear_acceleration[b] = Vec<2>(s[b].velocity[0] - before.velocity[0], s[b].velocity[1] - before.velocity[1]) / span;
-      angular_acceleration[b] = (s[b].angular_velocity - before.angular_velocity) / span;
-    }
+    s[b] = state(int(b));
+    field[b] = RigidField<D>(s[b], have_previous ? &placed_state_[b] : nullptr, time - placed_time_);
   }
   placed_state_ = s;
   placed_time_ = time;
   parallel_for(P.size(), [&](std::size_t i) {
     const int f = P.body_frame[i];
     if (f < 0) return;
-    const int b = P.body_frames.body[f];
-    const Vec<2> r = rotate(P.body_frames.offset[f], c[b], sn[b]);
-    const auto& st = s[b];
-    const double omega = st.angular_velocity;
-    P.position[i] = Vec<2>(st.position[0], st.position[1]) + r;
-    // v = V + omega x r, in 2-D omega x r = omega (-r_y, r_x).
-    P.velocity[i] = Vec<2>(st.velocity[0], st.velocity[1]) + omega * Vec<2>(-r[1], r[0]);
-    // a = A + alpha x r + omega x (omega x r) = A + alpha (-r_y, r_x) - omega^2 r.
-    P.acceleration[i] = linear_acceleration[b] + angular_acceleration[b] * Vec<2>(-r[1], r[0]) - (omega * omega) * r;
-    P.wall_normal[i] = rotate(P.body_frames.normal[f], c[b], sn[b]);
+    const auto& rf = field[static_cast<std::size_t>(P.body_frames.body[f])];
+    rf.place(P.body_frames.offset[f], P.position[i], P.velocity[i], P.acceleration[i]);
+    P.wall_normal[i] = rf.turned(P.body_frames.normal[f]);
   });
 }
 
 // Sums per-particle forces into their bodies in index order (deterministic for any thread count), with torques
 // about each body's centre of mass.
-void RigidBodies::accumulate(const Domain<2>& domain, const std::vector<Vec<2>>& f, bool viscous) {
-  const Particles<2>& P = domain.particles;
-  std::vector<Vec<2>> centre(size());
-  for (std::size_t b = 0; b < size(); ++b) {
-    const rigid::Vec2 c = world.state(int(b)).position;
-    centre[b] = Vec<2>(c[0], c[1]);
-  }
+template <int D>
+void RigidBodies<D>::accumulate(const Domain<D>& domain, const std::vector<Vec<D>>& f, bool viscous) {
+  const Particles<D>& P = domain.particles;
+  std::vector<Vec<D>> centre(size());
+  for (std::size_t b = 0; b < size(); ++b) centre[b] = centre_of<D>(state(int(b)));
   domain.sum_by_group(
       pending_, [&](std::size_t i) { return P.body_of(i); },
-      [&](BodyFluidForce& acc, std::size_t i) {
-        const Vec<2> arm = P.position[i] - centre[static_cast<std::size_t>(P.body_of(i))];
+      [&](BodyFluidForce<D>& acc, std::size_t i) {
+        const Vec<D> arm = P.position[i] - centre[static_cast<std::size_t>(P.body_of(i))];
         if (viscous) {
           acc.viscous += f[i];
-          acc.viscous_torque += cross2(arm, f[i]);
+          acc.viscous_torque += torque_of(arm, f[i]);
         } else {
           acc.pressure += f[i];
-          acc.pressure_torque += cross2(arm, f[i]);
+          acc.pressure_torque += torque_of(arm, f[i]);
         }
       });
 }
 
 // For every body particle j, the sum over its fluid neighbours i of pair_force(i, j) (the force fluid i exerts on
 // the body through j), then summed per body (Domain::sum_by_group).
+template <int D>
 template <class PairForce>
-void RigidBodies::exchange(const Domain<2>& domain, const NeighborList& nl, bool viscous,
-                           const PairForce& pair_force) {
-  const Particles<2>& P = domain.particles;
-  scratch_.assign(P.size(), Vec<2>::Zero());
+void RigidBodies<D>::exchange(const Domain<D>& domain, const NeighborList& nl, bool viscous,
+                              const PairForce& pair_force) {
+  const Particles<D>& P = domain.particles;
+  scratch_.assign(P.size(), Vec<D>::Zero());
   parallel_for(domain.owned_count(), [&](std::size_t j) {
     if (P.body_frame[j] < 0) return;
-    Vec<2> f = Vec<2>::Zero();
+    Vec<D> f = Vec<D>::Zero();
     for (const std::uint32_t* q = nl.begin(j); q != nl.end(j); ++q)
       if (P.kind[*q] == Kind::fluid) f += pair_force(*q, static_cast<std::uint32_t>(j));
     scratch_[j] = f;
@@ -110,39 +159,43 @@ void RigidBodies::exchange(const Domain<2>& domain, const NeighborList& nl, bool
 }
 
 // Viscous force of body particle j on fluid i: m_i scale_i term_ij; the body gets minus it.
-void RigidBodies::add_viscous_forces(const Domain<2>& domain, const NeighborList& nl, double re, double n0,
-                                     double lambda, const ViscousWall& wall, double volume) {
-  const Particles<2>& P = domain.particles;
+template <int D>
+void RigidBodies<D>::add_viscous_forces(const Domain<D>& domain, const NeighborList& nl, double re, double n0,
+                                        double lambda, const ViscousWall& wall, double volume) {
+  const Particles<D>& P = domain.particles;
   const double re2 = re * re;
-  exchange(domain, nl, true, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
-    const double r2 = distance_squared<2>(P.position[j], P.position[i]);
-    if (r2 >= re2) return Vec<2>::Zero();
+  exchange(domain, nl, true, [&](std::uint32_t i, std::uint32_t j) -> Vec<D> {
+    const double r2 = distance_squared<D>(P.position[j], P.position[i]);
+    if (r2 >= re2) return Vec<D>::Zero();
     const double mass = P.density[i] * volume;
-    return -(mass * viscous_scale<2>(i, P, n0, lambda)) * viscous_pair_term<2>(i, j, r2, P, re, wall);
+    return -(mass * viscous_scale<D>(i, P, n0, lambda)) * viscous_pair_term<D>(i, j, r2, P, re, wall);
   });
 }
 
 // Pressure force of body particle j on fluid i: -V_i grad_pair p_i (V_i = m_i / rho_i); the body gets plus it.
-void RigidBodies::add_pressure_forces(const Domain<2>& domain, const NeighborList& nl, GradientModel model, double re,
-                                      double n0, double kappa, double volume) {
-  const Particles<2>& P = domain.particles;
-  exchange(domain, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+template <int D>
+void RigidBodies<D>::add_pressure_forces(const Domain<D>& domain, const NeighborList& nl, GradientModel model,
+                                         double re, double n0, double kappa, double volume) {
+  const Particles<D>& P = domain.particles;
+  exchange(domain, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<D> {
     const double mass = P.density[i] * volume;
-    return (mass / P.density[i]) * pressure_gradient_pair<2>(model, i, j, P, nl, re, n0, kappa);
+    return (mass / P.density[i]) * pressure_gradient_pair<D>(model, i, j, P, nl, re, n0, kappa);
   });
 }
 
 // Collision of fluid i with body particle j changes u_i by du_ij: the body receives the impulse -m_i du_ij.
-void RigidBodies::add_collision_forces(const Domain<2>& domain, const NeighborList& nl, double distance,
-                                       double restitution, double volume, double dt) {
-  const Particles<2>& P = domain.particles;
-  exchange(domain, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<2> {
+template <int D>
+void RigidBodies<D>::add_collision_forces(const Domain<D>& domain, const NeighborList& nl, double distance,
+                                          double restitution, double volume, double dt) {
+  const Particles<D>& P = domain.particles;
+  exchange(domain, nl, false, [&](std::uint32_t i, std::uint32_t j) -> Vec<D> {
     const double mass = P.density[i] * volume;
-    return -(mass / dt) * collision_pair_change<2>(i, j, P, distance, restitution);
+    return -(mass / dt) * collision_pair_change<D>(i, j, P, distance, restitution);
   });
 }
 
-std::vector<Vec<2>> RigidBodies::outline_now(int b) const {
+template <int D>
+std::vector<Vec<2>> RigidBodies<D>::outline_now(int b) const requires(D == 2) {
   const auto st = world.state(b);
   const double c = std::cos(st.angle), sn = std::sin(st.angle);
   std::vector<Vec<2>> outline;
@@ -151,46 +204,55 @@ std::vector<Vec<2>> RigidBodies::outline_now(int b) const {
   return outline;
 }
 
-void RigidBodies::add_dry_face_pressure(const Particles<2>& P, const NeighborGrid<2>& grid,
-                                        const PorePressureField<2>& pore, double dp) {
-  if (!pore.surface) return;
-  for (std::size_t b = 0; b < size(); ++b) {
-    const auto st = world.state(int(b));
-    const ForceAndTorque f =
-        dry_face_pressure(outline_now(int(b)), int(b), Vec<2>(st.position[0], st.position[1]), P, grid, pore, dp);
-    pending_[b].pressure += f.force;
-    pending_[b].pressure_torque += f.torque;
+template <int D>
+void RigidBodies<D>::add_dry_face_pressure(const Particles<D>& P, const NeighborGrid<D>& grid,
+                                           const PorePressureField<D>& pore, double dp) {
+  if constexpr (D == 2) {
+    if (!pore.surface) return;
+    for (std::size_t b = 0; b < size(); ++b) {
+      const auto st = world.state(int(b));
+      const ForceAndTorque f =
+          dry_face_pressure(outline_now(int(b)), int(b), Vec<2>(st.position[0], st.position[1]), P, grid, pore, dp);
+      pending_[b].pressure += f.force;
+      pending_[b].pressure_torque += f.torque;
+    }
   }
 }
 
-void RigidBodies::set_settling(bool on) {
+template <int D>
+void RigidBodies<D>::set_settling(bool on) {
   settling_ = on;
   for (std::size_t b = 0; b < size(); ++b) {
     const auto& m = motion[b];
     if (m.mode != BodyMotion::Mode::free) continue;
     world.set_held(int(b), on ? !m.free_while_settling : m.release_time > 0.0);
-    if (!on) world.set_velocity(int(b), rigid::Vec2::Zero(), 0.0);
+    if (on) continue;
+    if constexpr (D == 2) world.set_velocity(int(b), rigid::Vec2::Zero(), 0.0);
+    else world.set_velocity(int(b), rigid::Vec3::Zero(), rigid::Vec3::Zero());
   }
   placed_state_.clear();
 }
 
-void RigidBodies::damp_floating(double factor) {
+template <int D>
+void RigidBodies<D>::damp_floating(double factor) {
   for (std::size_t b = 0; b < size(); ++b) {
     if (motion[b].mode != BodyMotion::Mode::free || !motion[b].free_while_settling) continue;
-    const auto s = world.state(int(b));
-    world.set_velocity(int(b), factor * s.velocity, factor * s.angular_velocity);
+    const auto s = state(int(b));
+    if constexpr (D == 2) world.set_velocity(int(b), factor * s.velocity, factor * s.angular_velocity);
+    else world.set_velocity(int(b), rigid::Vec3(factor * s.velocity), rigid::Vec3(factor * s.angular_velocity));
   }
 }
 
-void RigidBodies::advance(double time_after, double dt) {
+template <int D>
+void RigidBodies<D>::advance(double time_after, double dt) {
   for (std::size_t b = 0; b < size(); ++b) {
     const auto& f = pending_[b];
     if (motion[b].mode == BodyMotion::Mode::free) {
       if (!settling_ && time_after > motion[b].release_time) world.set_held(int(b), false);
-      world.apply_force(int(b), rigid::Vec2(f.total()[0], f.total()[1]), f.total_torque());
+      world.apply_force(int(b), world_vector(f.total()), f.total_torque());
     }
     force[b] = f;
-    pending_[b] = BodyFluidForce{};
+    pending_[b] = BodyFluidForce<D>{};
   }
   world.step(dt);
   for (std::size_t b = 0; b < size(); ++b) {
@@ -200,13 +262,18 @@ void RigidBodies::advance(double time_after, double dt) {
     m.fluid.viscous += dt * f.viscous;
     m.fluid.pressure_torque += dt * f.pressure_torque;
     m.fluid.viscous_torque += dt * f.viscous_torque;
-    const auto c = world.contact_force(int(b));
-    m.contact += dt * Vec<2>(c[0], c[1]);
+    if constexpr (D == 2) {
+      const auto c = world.contact_force(int(b));
+      m.contact += dt * Vec<2>(c[0], c[1]);
+    } else {
+      m.contact += dt * Vec<3>(world.contact_force_3d(int(b)));
+    }
   }
   impulse_time_ += dt;
 }
 
-std::vector<RigidBodies::MeanForces> RigidBodies::take_mean_forces() {
+template <int D>
+std::vector<typename RigidBodies<D>::MeanForces> RigidBodies<D>::take_mean_forces() {
   std::vector<MeanForces> out(size());
   if (impulse_time_ > 0.0) {
     const double inv = 1.0 / impulse_time_;
@@ -235,16 +302,27 @@ void transfer_force(Stream& s, Force& f) {
 }
 template <class Stream, class Pose>
 void transfer_pose(Stream& s, Pose& p) {
-  s.io(p.position[0]);
-  s.io(p.position[1]);
-  s.io(p.angle);
-  s.io(p.velocity[0]);
-  s.io(p.velocity[1]);
-  s.io(p.angular_velocity);
+  if constexpr (std::is_same_v<std::remove_const_t<Pose>, rigid::PlanarState>) {
+    s.io(p.position[0]);
+    s.io(p.position[1]);
+    s.io(p.angle);
+    s.io(p.velocity[0]);
+    s.io(p.velocity[1]);
+    s.io(p.angular_velocity);
+  } else {
+    for (int k = 0; k < 3; ++k) s.io(p.position[k]);
+    s.io(p.orientation.w());
+    s.io(p.orientation.x());
+    s.io(p.orientation.y());
+    s.io(p.orientation.z());
+    for (int k = 0; k < 3; ++k) s.io(p.velocity[k]);
+    for (int k = 0; k < 3; ++k) s.io(p.angular_velocity[k]);
+  }
 }
 }  // namespace
 
-void RigidBodies::save_state(StateWriter& out) const {
+template <int D>
+void RigidBodies<D>::save_state(StateWriter& out) const {
   out.put(world.journal());
   out.put<std::uint64_t>(size());
   for (std::size_t b = 0; b < size(); ++b) {
@@ -260,7 +338,8 @@ void RigidBodies::save_state(StateWriter& out) const {
   out.put(settling_);
 }
 
-void RigidBodies::restore_state(StateReader& in) {
+template <int D>
+void RigidBodies<D>::restore_state(StateReader& in) {
   std::vector<double> journal;
   in.get(journal);
   world.replay(journal);
@@ -278,5 +357,8 @@ void RigidBodies::restore_state(StateReader& in) {
   in.get(placed_time_);
   in.get(settling_);
 }
+
+template class RigidBodies<2>;
+template class RigidBodies<3>;
 
 }  // namespace slide

@@ -71,9 +71,7 @@ void Simulation<D>::initialise() {
   grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();  // sized by the semi-implicit stage, the only one that uses it
-  if constexpr (D == 2) {
-    if (bodies_) bodies_->place_particles(domain_.particles, time_);
-  }
+  if (bodies_) bodies_->place_particles(domain_.particles, time_);
   update_neighbors(true);
   compute_pressure();
   update_water_surface();
@@ -485,10 +483,8 @@ void Simulation<D>::predict_with_viscosity_and_gravity(double dt) {
       P.acceleration[i] = a + options.gravity;
     });
   }
-  if constexpr (D == 2) {
-    if (bodies_)
-      bodies_->add_viscous_forces(domain_, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(), particle_volume());
-  }
+  if (bodies_)
+    bodies_->add_viscous_forces(domain_, list_, r_e, lattice.n0, lattice.lambda, options.viscous_wall(), particle_volume());
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     if (implicit) {
@@ -526,11 +522,9 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
     const double* f = factors_taken ? pair_weights_.of(list_, i) : nullptr;
     scratch_[i] = (-1.0 / P.density[i]) * pressure_gradient<D>(model, i, P, list_, r_e, lattice.n0, lattice.kappa, f);
   });
-  if constexpr (D == 2) {
-    if (bodies_) {
-      bodies_->add_pressure_forces(domain_, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
-      bodies_->add_dry_face_pressure(P, grid_, pore_pressure_field(), options.dp);
-    }
+  if (bodies_) {
+    bodies_->add_pressure_forces(domain_, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
+    bodies_->add_dry_face_pressure(P, grid_, pore_pressure_field(), options.dp);
   }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
@@ -554,10 +548,8 @@ void Simulation<D>::collide(double dt) {
                       ? collision_velocity_change<D>(i, P, list_, distance, options.collision_restitution)
                       : Vec<D>::Zero();
   });
-  if constexpr (D == 2) {
-    if (bodies_)
-      bodies_->add_collision_forces(domain_, list_, distance, options.collision_restitution, particle_volume(), dt);
-  }
+  if (bodies_)
+    bodies_->add_collision_forces(domain_, list_, distance, options.collision_restitution, particle_volume(), dt);
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     P.velocity[i] += scratch_[i];
@@ -569,11 +561,9 @@ void Simulation<D>::collide(double dt) {
 // Rigid bodies: the fluid's force in, one rigid step of the same dt, boundary particles to the new poses.
 template <int D>
 void Simulation<D>::move_bodies(double dt) {
-  if constexpr (D == 2) {
-    if (!bodies_) return;
-    bodies_->advance(time_ + dt, dt);
-    bodies_->place_particles(domain_.particles, time_ + dt);
-  }
+  if (!bodies_) return;
+  bodies_->advance(time_ + dt, dt);
+  bodies_->place_particles(domain_.particles, time_ + dt);
 }
 
 // Problem code of real particle i, most severe highest: 4 non-finite, 2 collapse, 1 speed, 0 none. Leaving the
@@ -673,9 +663,7 @@ void Simulation<D>::save_state(StateWriter& out) const {
   out.put(options.velocity_damping_rate);
   out.put(rheology_suspended_);
   out.put(bodies_ != nullptr);
-  if constexpr (D == 2) {
-    if (bodies_) bodies_->save_state(out);
-  }
+  if (bodies_) bodies_->save_state(out);
 }
 
 template <int D>
@@ -717,9 +705,7 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(options.velocity_damping_rate);
   in.get(rheology_suspended_);
   if (in.get<bool>() != (bodies_ != nullptr)) throw std::runtime_error("the checkpoint's bodies are not the scene's");
-  if constexpr (D == 2) {
-    if (bodies_) bodies_->restore_state(in);
-  }
+  if (bodies_) bodies_->restore_state(in);
   // The neighbour list as it was built: from the positions of that moment, in the present order (no re-sort).
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();

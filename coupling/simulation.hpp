@@ -36,7 +36,8 @@
 
 namespace slide {
 
-class RigidBodies;  // coupling/rigid_bodies.hpp (2-D scenes)
+template <int D>
+class RigidBodies;  // coupling/rigid_bodies.hpp
 
 // What the semi-implicit viscous stage has solved so far (run.json reports it).
 struct ViscousSolveStats {
@@ -99,10 +100,10 @@ class Simulation {
   // step).
   const std::vector<LeftParticle>& left_the_domain() const { return left_the_domain_; }
 
-  // Rigid bodies two-way coupled with the fluid; null when the scene has none. 2-D only.
-  const std::shared_ptr<RigidBodies>& bodies() const { return bodies_; }
-  void attach_bodies(std::shared_ptr<RigidBodies> bodies) { bodies_ = std::move(bodies); }
-  std::shared_ptr<RigidBodies> detach_bodies() { return std::move(bodies_); }
+  // Rigid bodies two-way coupled with the fluid; null when the scene has none.
+  const std::shared_ptr<RigidBodies<D>>& bodies() const { return bodies_; }
+  void attach_bodies(std::shared_ptr<RigidBodies<D>> bodies) { bodies_ = std::move(bodies); }
+  std::shared_ptr<RigidBodies<D>> detach_bodies() { return std::move(bodies_); }
 
   // Fluid velocities decay as exp(-rate t) in every step (settling only; 0 = off).
   void set_velocity_damping(double rate_per_s) { options.velocity_damping_rate = rate_per_s; }
@@ -171,7 +172,7 @@ class Simulation {
   void check_periodic_setup() const;
 
   Domain<D> domain_;
-  std::shared_ptr<RigidBodies> bodies_;
+  std::shared_ptr<RigidBodies<D>> bodies_;
   double time_ = 0.0;
   long step_count_ = 0;
   std::array<long, time_step_limit_count> limit_counts_{};

@@ -328,7 +328,7 @@ TEST(Periodic, SimulationGhostsAreTheRealParticlesNearTheEnds) {
 TEST(Periodic, RefusesBodiesShortPeriodsAndWallsOutsideThePeriod) {
   {
     PeriodicChannel ch(16, 4, Vec<2>::Zero(), true);
-    ch.sim.attach_bodies(std::make_shared<RigidBodies>(Vec<2>::Zero(), 0.001));
+    ch.sim.attach_bodies(std::make_shared<RigidBodies<2>>(Vec<2>::Zero(), 0.001));
     EXPECT_THROW(ch.sim.initialise(), std::invalid_argument);
   }
   {

@@ -12,7 +12,7 @@ namespace slide::testing {
 namespace {
 
 TEST(RigidCoupling, BodyParticlesFollowThePoseAfterManySteps) {
-  RigidBodies bodies(Vec<2>::Zero(), 1e-3);
+  RigidBodies<2> bodies(Vec<2>::Zero(), 1e-3);
   rigid::BodySpec spec;
   spec.outline = {rigid::Vec2(0.2, 0.1), rigid::Vec2(0.6, 0.1), rigid::Vec2(0.2, 0.4)};
   spec.mass = 30.0;
@@ -56,7 +56,7 @@ TEST(RigidCoupling, BodyParticlesFollowThePoseAfterManySteps) {
 // A falling, spun-up body: its particles carry the rigid acceleration g + alpha x r - omega^2 r, here with alpha = 0.
 TEST(RigidCoupling, BodyParticlesCarryTheRigidAcceleration) {
   const Vec<2> g(0.0, -9.81);
-  RigidBodies bodies(g, 1e-3);
+  RigidBodies<2> bodies(g, 1e-3);
   rigid::BodySpec spec;
   spec.outline = {rigid::Vec2(0.0, 0.0), rigid::Vec2(0.2, 0.0), rigid::Vec2(0.2, 0.1), rigid::Vec2(0.0, 0.1)};
   spec.mass = 10.0;

@@ -1,5 +1,6 @@
 #include "tools/run_outputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -76,17 +77,51 @@ SnapshotLegend snapshot_legend(const Simulation<D>& sim) {
   return legend;
 }
 
+// bodies.csv's columns. 2-D: the pose as (x, y, angle), torques about z. 3-D: the orientation as a quaternion (w, x,
+// y, z) and as Tait-Bryan angles roll, pitch, yaw (rad; intrinsic z-y'-x'': R = Rz(yaw) Ry(pitch) Rx(roll)), the
+// angular velocity and torques as vectors in world axes.
+template <int D>
+std::vector<std::string> body_columns() {
+  if constexpr (D == 2)
+    return {"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
+            "torque", "fx_pressure", "fy_pressure", "torque_pressure", "fx_viscous",
+            "fy_viscous", "torque_viscous", "fx_contact", "fy_contact"};
+  else
+    return {"time", "body", "x", "y", "z", "qw", "qx", "qy", "qz", "roll", "pitch", "yaw", "vx", "vy", "vz",
+            "wx", "wy", "wz", "fx", "fy", "fz", "tx", "ty", "tz", "fx_pressure", "fy_pressure", "fz_pressure",
+            "tx_pressure", "ty_pressure", "tz_pressure", "fx_viscous", "fy_viscous", "fz_viscous", "tx_viscous",
+            "ty_viscous", "tz_viscous", "fx_contact", "fy_contact", "fz_contact"};
+}
+
+template <int D>
+std::vector<double> body_row(const RigidBodies<D>& bodies, int b, const typename RigidBodies<D>::MeanForces& mean) {
+  const auto s = bodies.state(b);
+  const auto& f = mean.fluid;
+  const auto& c = mean.contact;
+  if constexpr (D == 2) {
+    return {s.position[0], s.position[1], bodies.absolute_angle(b), s.velocity[0], s.velocity[1],
+            s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
+            f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
+  } else {
+    const rigid::Quat q = bodies.absolute_orientation(b);
+    const Eigen::Matrix3d R = Eigen::Quaterniond(q).toRotationMatrix();
+    const double roll = std::atan2(R(2, 1), R(2, 2)), pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)),
+                 yaw = std::atan2(R(1, 0), R(0, 0));
+    std::vector<double> row{s.position[0], s.position[1], s.position[2], q.w(), q.x(), q.y(), q.z(), roll, pitch, yaw};
+    for (const Vec<3>& v : {Vec<3>(s.velocity), Vec<3>(s.angular_velocity), f.total(), Vec<3>(f.total_torque()),
+                            f.pressure, f.pressure_torque, f.viscous, f.viscous_torque, c})
+      row.insert(row.end(), {v[0], v[1], v[2]});
+    return row;
+  }
+}
+
 }  // namespace
 
 template <int D>
 RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming)
     : scene_(scene), sim_(*scene.simulation) {
   if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_), !resuming);
-  if (sim_.bodies())
-    bodies_.emplace(out / "bodies.csv",
-                    std::vector<std::string>{"time", "body", "x", "y", "angle", "vx", "vy", "omega", "fx", "fy",
-                                             "torque", "fx_pressure", "fy_pressure", "torque_pressure", "fx_viscous",
-                                             "fy_viscous", "torque_viscous", "fx_contact", "fy_contact"});
+  if (sim_.bodies()) bodies_.emplace(out / "bodies.csv", body_columns<D>());
   if (!scene.gauges.empty()) {
     std::vector<std::string> cols{"time"};
     for (const auto& g : scene.gauges) cols.push_back(g.name);
@@ -166,15 +201,8 @@ void RunOutputs<D>::sample_bodies() {
   if (!bodies) return;
   last_body_sample_time_ = sim_.time();
   const auto mean = bodies->take_mean_forces();
-  for (std::size_t b = 0; b < bodies->size(); ++b) {
-    const auto s = bodies->state(int(b));
-    const auto& f = mean[b].fluid;
-    const auto& c = mean[b].contact;
-    const double row[] = {s.position[0], s.position[1], bodies->absolute_angle(int(b)), s.velocity[0], s.velocity[1],
-                          s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
-                          f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
-    bodies_->add_labelled_row(sim_.time(), bodies->names[b], row);
-  }
+  for (std::size_t b = 0; b < bodies->size(); ++b)
+    bodies_->add_labelled_row(sim_.time(), bodies->names[b], body_row<D>(*bodies, int(b), mean[b]));
 }
 
 // Each profile is taken at the first step at or after its time.
