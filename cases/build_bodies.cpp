@@ -442,8 +442,6 @@ void build_slides_and_bodies(SceneBuild<2>& b) {
   }
 }
 
-namespace {
-
 // The still-water level the scene states: the highest below_level region's level (-infinity without one). The same
 // as fill_fluid_regions sets as still_level, known before the walls and bodies are built.
 double stated_still_level(const YAML::Node& r) {
@@ -452,6 +450,8 @@ double stated_still_level(const YAML::Node& r) {
     if (rn["type"].as<std::string>() == "below_level") level = std::max(level, rn["level"].as<double>());
   return level;
 }
+
+namespace {
 
 // How far up a body of mass m (per unit width) must move to float at level L: the s at which
 // rho_w * area_below(outline + s, L) = m, by bisection (the area grows monotonically as the body goes down).

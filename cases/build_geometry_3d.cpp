@@ -94,7 +94,7 @@ void fill_fluid_regions(SceneBuild<3>& b) {
     const auto& phase = b.phases.phases[ph];
     std::size_t added = 0;
     auto take = [&](const Vec<3>& p, bool inside) {
-      if (!inside || !b.in_period(p[0])) return;
+      if (!inside || !b.in_period(p[0]) || body_near(b, p) >= 0) return;
       P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
       b.fluid_owner.push_back(path);
       ++added;

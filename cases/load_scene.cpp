@@ -28,7 +28,7 @@ int requested_dimension(const YAML::Node& raw) {
 
 // 2-D keys that 3-D scenes do not have yet: named as such rather than as unknown keys.
 void refuse_keys_not_yet_in_3d(const YAML::Node& raw) {
-  for (const char* key : {"bodies", "rigid", "profiles", "diagnostics"})
+  for (const char* key : {"profiles", "diagnostics"})
     if (raw[key])
       throw SceneError(key, std::string("3-D scenes (dimension: 3) have no ") + key +
                                 " yet: this key works in 2-D scenes only (cases/SCHEMA.md, 3-D scenes)");

@@ -24,9 +24,9 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
   check_period(b);
   check_particle_budget(b);  // before any particle is made
   b.phases = read_phases(r["fluid"]["phases"]);
-  if constexpr (D == 2) place_floating_bodies(b);  // before anything is laid around them
+  place_floating_bodies(b);  // before anything is laid around them
   build_walls(b);  // first: below_level regions need the faces, bodies the lattice offset and faces
-  if constexpr (D == 2) build_slides_and_bodies(b);
+  build_slides_and_bodies(b);
   fill_fluid_regions(b);
   check_overlaps(b);
   if constexpr (D == 2) check_fluid_contained(b);
@@ -39,7 +39,7 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
   set_domain(b);
   count_particles(b);
   read_outputs(b);
-  if constexpr (D == 2) finish_bodies(b);
+  finish_bodies(b);
   set_phases(b);
   try {
     b.sim->initialise();

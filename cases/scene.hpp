@@ -65,22 +65,24 @@ struct OutputSpec {
 
 // What `slide check` reports about a body: mass and inertia from the outline beside the same sums over a dp
 // lattice filling it, and the buoyancy at the still-water level.
-struct BodyReport {
+template <int D>
+struct BodyReportOf {
   std::string name;
   std::string motion;
-  double area = 0.0;             // m^2 (per unit width)
-  double mass = 0.0;             // kg/m
-  double inertia = 0.0;          // kg m, about the centre of mass
+  double area = 0.0;             // its size: m^2 (per unit width) in 2-D, its volume in m^3 in 3-D
+  double mass = 0.0;             // kg/m (2-D), kg (3-D)
+  double inertia = 0.0;          // kg m, about the centre of mass (2-D; 3-D: the tensor's mean diagonal, kg m^2)
   double mass_particles = 0.0;   // the same from lattice points inside the outline
   double inertia_particles = 0.0;
   double displaced_area = 0.0;   // below the still-water level, m^2
   double buoyancy_ratio = 0.0;   // rho_water g displaced / (m g); NaN without a still-water level
   std::size_t particles = 0;     // boundary particles
-  Vec<2> placed = Vec<2>::Zero();  // centre of mass where the scene puts it, m
-  std::vector<Vec<2>> outline;     // where the scene puts it, counter-clockwise, m
+  Vec<D> placed = Vec<D>::Zero();  // centre of mass where the scene puts it, m
+  std::vector<Vec<2>> outline;     // where the scene puts it, counter-clockwise, m (2-D)
   bool free_while_settling = false;  // during_settling: free
   double moved_to_draft = 0.0;       // m up (< 0: down) from where the scene put it to its draft (place_floating_bodies)
 };
+using BodyReport = BodyReportOf<2>;
 
 // A deformable slide (bodies[k] with a model other than rigid): sediment particles of its own phase.
 struct SlideReport {
@@ -126,7 +128,7 @@ struct Scene {
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::size_t gate_particles = 0;  // boundary particles of gates (walls[].gate), taken away at t = 0
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
-  std::vector<BodyReport> bodies;
+  std::vector<BodyReportOf<D>> bodies;
   std::vector<SlideReport> slides;
   std::vector<double> slide_outline_times;  // s, increasing
   std::optional<SlideShapesSpec> slide_shapes;

@@ -77,6 +77,7 @@ struct SceneBuild {
   // deformable slides (filled with their phase's particles by fill_fluid_regions).
   std::shared_ptr<RigidBodies<D>> bodies;
   std::vector<std::vector<rigid::Vec2>> outlines;
+  std::vector<rigid::TriangleSurface> solids;  // 3-D: each rigid body's surface (world, t = 0)
   struct Slide {
     std::string path;  // bodies[k]
     std::vector<rigid::Vec2> outline;
@@ -103,10 +104,14 @@ template <int D> void check_run_memory(SceneBuild<D>& b);       // build_particl
 double estimated_particles(const SceneBuild<2>& b);             // build_particle_budget.cpp
 double estimated_particles(const SceneBuild<3>& b);             // build_geometry_3d.cpp
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
+double stated_still_level(const YAML::Node& r);  // build_bodies.cpp: the highest below_level level, or -inf
 void place_floating_bodies(SceneBuild<2>& b);     // build_bodies.cpp: bodies that float while settling, to their draft
+void place_floating_bodies(SceneBuild<3>& b);     // build_bodies_3d.cpp
 void build_walls(SceneBuild<2>& b);               // build_walls.cpp
 void build_walls(SceneBuild<3>& b);               // build_geometry_3d.cpp
 void build_slides_and_bodies(SceneBuild<2>& b);   // build_bodies.cpp
+void build_slides_and_bodies(SceneBuild<3>& b);   // build_bodies_3d.cpp (rigid bodies so far)
+int body_near(const SceneBuild<3>& b, const Vec<3>& p);  // build_bodies_3d.cpp: the body p is in or near, or -1
 void fill_fluid_regions(SceneBuild<2>& b);        // build_fluid_regions.cpp
 void fill_fluid_regions(SceneBuild<3>& b);        // build_geometry_3d.cpp
 template <int D> void check_overlaps(SceneBuild<D>& b);  // build_fluid_regions.cpp
@@ -117,6 +122,7 @@ template <int D> void set_domain(SceneBuild<D>& b);          // build_initial_st
 template <int D> void count_particles(SceneBuild<D>& b);     // build_initial_state.cpp
 template <int D> void read_outputs(SceneBuild<D>& b);        // build_outputs.cpp
 void finish_bodies(SceneBuild<2>& b);             // build_bodies.cpp
+void finish_bodies(SceneBuild<3>& b);             // build_bodies_3d.cpp
 template <int D> void set_phases(SceneBuild<D>& b);          // build_phases.cpp
 template <int D> void plan_settling(SceneBuild<D>& b);       // build_initial_state.cpp: Scene::pending_settling
 template <int D> void settle_now(Scene<D>& scene);           // build_initial_state.cpp: settles it, then complete_start

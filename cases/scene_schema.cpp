@@ -327,7 +327,7 @@ Schema dimension_schema() {
                     2L, 2L, 3L);
 }
 
-// 3-D scenes (dimension: 3): the keys that exist in 3-D so far (issue 31 grows them: bodies, meshes, terrain).
+// 3-D scenes (dimension: 3): the keys that exist in 3-D so far (issue 31 grows them: meshes, terrain).
 Schema box_schema(std::string doc) {
   return S::map(std::move(doc), {{"min", S::vector("lower corner", "m", 3, std::nullopt)},
                                  {"max", S::vector("upper corner", "m", 3, std::nullopt)}});
@@ -382,6 +382,38 @@ Schema domain_schema_3d() {
       false);
 }
 
+// Rigid bodies in 3-D: Bullet solids in six degrees of freedom (coupling/rigid_bodies.hpp).
+Schema body_schema_3d() {
+  return S::map(
+      "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
+      "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
+      "its faces) exchange forces with the fluid. 3-D so far: box shapes, free motion (prescribed motion, deformable "
+      "slides and other shapes are 2-D only yet)",
+      {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
+       {"shape",
+        S::variant("the body's shape", "type",
+                   {{"box", S::map("a box", {{"center", S::vector("centre", "m", 3, std::nullopt)},
+                                             {"size", S::vector("edge lengths along its own x, y, z", "m", 3,
+                                                                std::nullopt, 0.0)},
+                                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
+                                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}})},
+       {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, S::inf)},
+       {"mass", S::number("mass; 0 = density times volume", "kg", 0.0, 0.0, S::inf)},
+       {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
+       {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
+       {"locked", S::list("components held fixed: x, y, z (translations), rx, ry, rz (rotations about the axes)",
+                          S::choice("component", {"x", "y", "z", "rx", "ry", "rz"}, std::nullopt))},
+       {"release_time",
+        S::number("the body is held in place until this time while the water settles", "s", 0.0, 0.0, S::inf)},
+       {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
+                                     "put while the water settles; free first moves a body lighter than water up or "
+                                     "down to its draft below the still-water level (Archimedes on its surface, heave "
+                                     "only; the highest below_level region's level, gravity along -z), lays the water "
+                                     "around it there, and lets it float with the water under the same damping",
+                                     during_settling_names.names(), std::string(to_string(DuringSettling::held)))}});
+}
+
 Schema make_schema_3d() {
   return S::map(
       "a 3-D slide scene (dimension: 3): x and y horizontal, z up",
@@ -404,6 +436,8 @@ Schema make_schema_3d() {
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
                                       {"regions", S::list("regions filled with fluid", region_schema_3d(), 1)}})},
        {"walls", S::list("walls", wall_schema_3d())},
+       {"bodies", S::list("rigid bodies (floating boxes)", body_schema_3d())},
+       {"rigid", rigid_schema()},
        {"method", method_schema()},
        {"time_step", time_step_schema()},
        {"checks", checks_schema()},

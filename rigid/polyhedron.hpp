@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -92,6 +93,61 @@ inline std::vector<Vec3> inset_convex(const TriangleSurface& s, double margin) {
         throw std::invalid_argument("a body too thin for the collision margin");
   }
   return out;
+}
+
+// The volume of the solid below the plane z = level: its surface clipped to z <= level, the tetrahedra taken from a
+// point on the plane (the cap the plane cuts lies in it and adds nothing), so the sum is exact for any closed surface.
+inline double volume_below(const TriangleSurface& s, double level) {
+  double v = 0.0;
+  const Vec3 o(0.0, 0.0, level);
+  for (const auto& t : s.triangles) {
+    // Sutherland-Hodgman against the one plane.
+    Vec3 kept[4];
+    int n = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = s.vertices[t[k]] - o, b = s.vertices[t[(k + 1) % 3]] - o;
+      if (a[2] <= 0.0) kept[n++] = a;
+      if ((a[2] < 0.0 && b[2] > 0.0) || (a[2] > 0.0 && b[2] < 0.0)) kept[n++] = a + (a[2] / (a[2] - b[2])) * (b - a);
+    }
+    for (int k = 1; k + 1 < n; ++k) v += kept[0].dot(kept[k].cross(kept[k + 1])) / 6.0;
+  }
+  return v;
+}
+
+// The point of triangle (a, b, c) nearest to p, by its Voronoi regions (Ericson, Real-Time Collision Detection, 5.1.5).
+inline Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Distance from p to the surface (to its nearest triangle), m.
+inline double distance_to_surface(const TriangleSurface& s, const Vec3& p) {
+  double best = INFINITY;
+  for (const auto& t : s.triangles)
+    best = std::min(best, (closest_point_on_triangle(p, s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]) - p).norm());
+  return best;
+}
+
+// Whether p lies inside (or on) a convex surface: behind every triangle's plane.
+inline bool inside_convex(const TriangleSurface& s, const Vec3& p) {
+  for (const auto& t : s.triangles)
+    if (outward_normal(s, t).dot(p - s.vertices[t[0]]) > 0.0) return false;
+  return true;
 }
 
 // A box of the given edge lengths centred at `centre`, its edges along the columns of `axes` (a rotation), as twelve

@@ -63,6 +63,20 @@ TEST(SolidBody, TetrahedronMassPropertiesMatchClosedForms) {
   EXPECT_THROW(mass_properties(t), std::invalid_argument);
 }
 
+TEST(SolidBody, VolumeBelowALevelMatchesClosedForms) {
+  const TriangleSurface box = box_surface(Vec3(0.3, 0.2, 1.0), Vec3(0.2, 0.1, 0.4));
+  EXPECT_NEAR(volume_below(box, 0.5), 0.0, 1e-18);
+  EXPECT_NEAR(volume_below(box, 0.9), 0.2 * 0.1 * 0.1, 1e-15);
+  EXPECT_NEAR(volume_below(box, 1.0), 0.2 * 0.1 * 0.2, 1e-15);
+  EXPECT_NEAR(volume_below(box, 2.0), 0.2 * 0.1 * 0.4, 1e-15);
+  // A cube on its edge (turned 45 degrees about x), edge 1, centre at 0: below z = 0 half of it; below z = -h with
+  // h < sqrt(2)/2 a prism of triangular section (sqrt(2)/2 - h)^2.
+  const TriangleSurface edge = box_surface(Vec3::Zero(), Vec3(1.0, 1.0, 1.0), rotation_about(Vec3(1, 0, 0), M_PI / 4));
+  EXPECT_NEAR(volume_below(edge, 0.0), 0.5, 1e-14);
+  const double h = 0.3, w = std::sqrt(0.5) - h;
+  EXPECT_NEAR(volume_below(edge, -h), w * w, 1e-14);
+}
+
 TEST(SolidBody, FreeFlightKeepsVelocityAndSpinAboutAPrincipalAxis) {
   RigidWorld w(Vec3(0.0, 0.0, 0.0), 1e-3);
   const int b = w.add_solid(box_solid(Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.1, 0.05), 800.0));
