@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cases/particle_budget.hpp"
+#include "coupling/position_text.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "coupling/water_gap.hpp"
 
@@ -121,6 +122,30 @@ std::string bodies(const Scene<2>& scene) {
   return out;
 }
 
+std::string bodies(const Scene<3>& scene) {
+  std::string out;
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const auto& b = scene.bodies[k];
+    out += fmt::format(
+        "body {:<10} {} motion (six degrees of freedom), {} boundary particles\n"
+        "  mass            {:.6g} kg, inertia {:.6g} kg m^2 (the tensor's mean diagonal)\n"
+        "  volume          {:.6g} m^3, displaced below the still-water level {:.6g} m^3, buoyancy / weight {:.4g}\n",
+        b.name, b.motion, b.particles, b.mass, b.inertia, b.area, b.displaced_area, b.buoyancy_ratio);
+    if (b.moved_to_draft != 0.0)
+      out += fmt::format("  placed at its draft below the still-water level: moved {:+.3f} mm from where the scene "
+                         "put it (Archimedes on its surface)\n",
+                         1000.0 * b.moved_to_draft);
+    if (b.free_while_settling && scene.settling) {
+      const auto s = scene.simulation->bodies()->state(static_cast<int>(k));
+      out += fmt::format("  settled with the water: centre {} m, turned {:.4g} deg, {:.3g} mm from where it was put\n",
+                         position_text<3>(Vec<3>(s.position)),
+                         s.orientation.angularDistance(rigid::Quat::Identity()) * 180.0 / M_PI,
+                         1000.0 * (Vec<3>(s.position) - b.placed).norm());
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 
@@ -154,8 +179,7 @@ std::string phases_and_slides(const Scene<D>& scene) {
 template <int D>
 std::string check_report(const Scene<D>& scene) {
   std::string out = summary(scene) + phases_and_slides(scene) + start(scene);
-  if constexpr (D == 2) out += bodies(scene);
-  return out;
+  return out + bodies(scene);
 }
 
 template std::string check_report(const Scene<2>&);

@@ -57,7 +57,6 @@ TEST(Scene3D, FccTankHoldsTheLatticePointsInsideIt) {
 }
 
 TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
-  EXPECT_EQ(refusal_key(tank_scene("square", "bodies: []\n")), "bodies");
   EXPECT_EQ(refusal_key(tank_scene("square", "gravity: [0, -9.81]\n")), "gravity");
   EXPECT_EQ(refusal_key(tank_scene("hexagonal")), "lattice");
   std::string mirror = tank_scene("square");
@@ -74,6 +73,46 @@ TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
   } catch (const SceneError& e) {
     EXPECT_EQ(e.key_path, "dimension");
   }
+}
+
+// A box body: its boundary particles are its surface layers on a grid of the spacing (4 x 4 x 2 cells of dp, all
+// within the 3 layers: 32), and the water keeps clear of it (none inside it or within dp/2 of its surface).
+TEST(Scene3D, BoxBodyHasItsLayersAndTheWaterKeepsClearOfIt) {
+  const std::string body = "bodies: [{name: box, shape: {type: box, center: [0.05, 0.05, 0.05], size: [0.04, 0.04, "
+                           "0.02]}, density: 600}]\n";
+  const auto scene = build_scene<3>(load_scene_text(tank_scene("square", body), {}), "s");
+  ASSERT_EQ(scene->bodies.size(), 1u);
+  const auto& rep = scene->bodies[0];
+  EXPECT_EQ(rep.particles, 32u);
+  EXPECT_NEAR(rep.mass, 600.0 * 0.04 * 0.04 * 0.02, 1e-15);
+  EXPECT_NEAR(rep.area, 0.04 * 0.04 * 0.02, 1e-18);
+  EXPECT_NEAR(rep.buoyancy_ratio, 1000.0 / 600.0, 1e-9);  // wholly below the level
+  const auto& P = scene->simulation->particles();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid) continue;
+    const Vec<3> d = (P.position[i] - Vec<3>(0.05, 0.05, 0.05)).cwiseAbs() - Vec<3>(0.02, 0.02, 0.01);
+    EXPECT_GE(d.maxCoeff(), 0.5 * 0.01 - 1e-12) << "water at " << P.position[i].transpose();
+  }
+  ASSERT_TRUE(scene->simulation->bodies());
+  EXPECT_EQ(scene->simulation->bodies()->size(), 1u);
+}
+
+TEST(Scene3D, RefusesBadBodiesNamingTheKey) {
+  const auto with = [](const std::string& fields) {
+    return tank_scene("square", "bodies: [{name: box, shape: {type: box, center: [0.05, 0.05, 0.05], size: [0.04, "
+                                "0.04, 0.02]}" + fields + "}]\n");
+  };
+  EXPECT_EQ(refusal_key(with(", density: 600, mass: 1")), "bodies[0].density");
+  EXPECT_EQ(refusal_key(with("")), "bodies[0].density");
+  EXPECT_EQ(refusal_key(with(", density: 600, locked: [w]")), "bodies[0].locked[0]");
+  EXPECT_EQ(refusal_key(with(", density: 600, motion: prescribed")), "bodies[0].motion");  // not in 3-D yet
+  EXPECT_EQ(refusal_key(with(", density: 600, during_settling: free")), "bodies[0].during_settling");  // no settling
+  std::string outside = with(", density: 600");
+  outside.replace(outside.find("center: [0.05, 0.05, 0.05]"), 26, "center: [0.09, 0.05, 0.05]");
+  EXPECT_EQ(refusal_key(outside), "bodies[0].shape");
+  std::string flat = with(", density: 600");
+  flat.replace(flat.find("size: [0.04, 0.04, 0.02]"), 24, "size: [0.04, 0.04, 0.0]");
+  EXPECT_EQ(refusal_key(flat), "bodies[0].shape.size");
 }
 
 }  // namespace
