@@ -81,6 +81,14 @@ TEST(Restart, FloatingBlockResumedIsBitIdentical) {
                 0.06, 2, 2, 1);
 }
 
+// A 3-D body in six degrees of freedom floating with the water while it settles (the solid's journal), coarse and short.
+TEST(Restart, FloatingBox3DResumedIsBitIdentical) {
+  check_restart("restart_box_3d", (source_dir() / "cases" / "floating_box_3d.yaml").string(),
+                "--set particle_spacing=0.02 --set method.settling_time=0.1 --set end_time=0.06 "
+                "--set output.snapshot_interval=0.02",
+                0.03, 2, 2, 1);
+}
+
 // A deformable slide: semi-implicit viscosity with the corrected gradient, whose predictor reads the corrective
 // matrices of the step before (coupling/simulation.cpp); they travel in the checkpoint. Without them the resumed run's
 // gauges, front and snapshots differed from the straight run's (found in review, issue 29). Started from its lattice,

@@ -74,25 +74,35 @@ def plot_gauges(runs, target):
 
 
 def plot_bodies(runs, target):
+    """2-D bodies.csv: x, y, angle; 3-D: x, y, z and the orientation (roll, pitch, yaw and the quaternion's angle)."""
     fig, axes = plt.subplots(2, 2, figsize=(11, 7))
+    three_d = False
     for run in runs:
         rows = read_csv(os.path.join(run, "bodies.csv"))
+        dims = ("x", "y", "z") if rows and "z" in rows[0] else ("x", "y")
+        three_d = three_d or len(dims) == 3
         for body in sorted({r["body"] for r in rows}):
             mine = [r for r in rows if r["body"] == body]
             t = [float(r["time"]) for r in mine]
-            x0, y0 = float(mine[0]["x"]), float(mine[0]["y"])
-            dist = [((float(r["x"]) - x0) ** 2 + (float(r["y"]) - y0) ** 2) ** 0.5 for r in mine]
-            speed = [(float(r["vx"]) ** 2 + float(r["vy"]) ** 2) ** 0.5 for r in mine]
+            start = [float(mine[0][d]) for d in dims]
+            dist = [sum((float(r[d]) - s0) ** 2 for d, s0 in zip(dims, start)) ** 0.5 for r in mine]
+            speed = [sum(float(r["v" + d]) ** 2 for d in dims) ** 0.5 for r in mine]
             label = f"{body}: {label_of(run)}"
             axes[0][0].plot(t, dist, label=label)
             axes[0][1].plot(t, speed, label=label)
-            axes[1][0].plot(t, [float(r["fx"]) for r in mine], label=f"fx {label}")
-            axes[1][0].plot(t, [float(r["fy"]) for r in mine], "--", label=f"fy {label}")
-            axes[1][1].plot(t, [float(r["angle"]) for r in mine], label=label)
+            for d, style in zip(dims, ("-", "--", ":")):
+                axes[1][0].plot(t, [float(r["f" + d]) for r in mine], style, label=f"f{d} {label}")
+            if len(dims) == 2:
+                axes[1][1].plot(t, [float(r["angle"]) for r in mine], label=label)
+            else:
+                for name, style in (("roll", "-"), ("pitch", "--"), ("yaw", ":")):
+                    axes[1][1].plot(t, [float(r[name]) for r in mine], style, label=f"{name} {label}")
     axes[0][0].set(xlabel="time (s)", ylabel="distance travelled by the centre of mass (m)", title="position")
     axes[0][1].set(xlabel="time (s)", ylabel="speed (m/s)", title="velocity")
-    axes[1][0].set(xlabel="time (s)", ylabel="fluid force (N/m)", title="fluid force (pressure + viscous)")
-    axes[1][1].set(xlabel="time (s)", ylabel="angle (rad)", title="rotation")
+    axes[1][0].set(xlabel="time (s)", ylabel="fluid force (N)" if three_d else "fluid force (N/m)",
+                   title="fluid force (pressure + viscous)")
+    axes[1][1].set(xlabel="time (s)", ylabel="angle (rad)",
+                   title="orientation (roll, pitch, yaw: z-y'-x'')" if three_d else "rotation")
     for ax in axes.flat:
         ax.legend(fontsize=6)
     fig.tight_layout()
