@@ -427,9 +427,7 @@ void build_slides_and_bodies(SceneBuild<2>& b) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     const YAML::Node bn = list[k];
     const std::string path = fmt::format("bodies[{}]", k);
-    const std::string name = bn["name"].as<std::string>();
-    if (names.count(name)) throw SceneError(path + ".name", "duplicate body name \"" + name + "\"");
-    names[name] = k;
+    const std::string name = unique_body_name(names, bn, k);
     const std::vector<rigid::Vec2> outline = body_outline(bn, path);
     check_in_front_of_walls(b, outline, path);
     const BodyModel model = body_model_names.parse(bn["model"].as<std::string>());
@@ -440,6 +438,13 @@ void build_slides_and_bodies(SceneBuild<2>& b) {
     add_rigid_body(b, bn, path, outline);
     b.outlines.push_back(outline);
   }
+}
+
+std::string unique_body_name(std::map<std::string, std::size_t>& names, const YAML::Node& body, std::size_t k) {
+  const std::string name = body["name"].as<std::string>();
+  if (names.count(name)) throw SceneError(fmt::format("bodies[{}].name", k), "duplicate body name \"" + name + "\"");
+  names[name] = k;
+  return name;
 }
 
 // The still-water level the scene states: the highest below_level region's level (-infinity without one). The same

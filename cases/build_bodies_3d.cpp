@@ -163,9 +163,7 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     const YAML::Node bn = list[k];
     const std::string path = fmt::format("bodies[{}]", k);
-    const std::string name = bn["name"].as<std::string>();
-    if (names.count(name)) throw SceneError(path + ".name", "duplicate body name \"" + name + "\"");
-    names[name] = k;
+    const std::string name = unique_body_name(names, bn, k);
     const rigid::TriangleSurface surface = body_surface(bn, path);
     check_inside_tanks(b, surface, path);
     const rigid::SolidSpec spec = solid_spec(bn, surface, path);

@@ -105,6 +105,8 @@ double estimated_particles(const SceneBuild<2>& b);             // build_particl
 double estimated_particles(const SceneBuild<3>& b);             // build_geometry_3d.cpp
 ScenePhases read_phases(const YAML::Node& phases);  // build_phases.cpp
 double stated_still_level(const YAML::Node& r);  // build_bodies.cpp: the highest below_level level, or -inf
+// build_bodies.cpp: bodies[k]'s name, refused (naming bodies[k].name) when an earlier body has it; `names` collects them.
+std::string unique_body_name(std::map<std::string, std::size_t>& names, const YAML::Node& body, std::size_t k);
 void place_floating_bodies(SceneBuild<2>& b);     // build_bodies.cpp: bodies that float while settling, to their draft
 void place_floating_bodies(SceneBuild<3>& b);     // build_bodies_3d.cpp
 void build_walls(SceneBuild<2>& b);               // build_walls.cpp

@@ -5,23 +5,12 @@
 #include <cmath>
 
 #include "coupling/rigid_bodies.hpp"
-#include "rigid/polyhedron.hpp"
+#include "tests/solid_box.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
 
 namespace slide::testing {
 namespace {
-
-rigid::SolidSpec solid_box(const Vec<3>& centre, const Vec<3>& size, double density) {
-  const rigid::TriangleSurface s = rigid::box_surface(centre, size);
-  const rigid::MassProperties m = rigid::mass_properties(s);
-  rigid::SolidSpec spec;
-  spec.hull = s;
-  spec.centre_of_mass = m.centroid;
-  spec.mass = density * m.volume;
-  spec.inertia = density * m.inertia;
-  return spec;
-}
 
 // Spin about a principal axis (z) and drift: every particle at X + R(w t) r0 with velocity V + w x r and acceleration
 // w x (w x r), its normal turned with it.

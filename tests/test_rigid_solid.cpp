@@ -6,6 +6,7 @@
 
 #include "rigid/polyhedron.hpp"
 #include "rigid/rigid_world.hpp"
+#include "tests/solid_box.hpp"
 
 namespace slide::rigid {
 namespace {
@@ -14,16 +15,8 @@ Mat3 rotation_about(const Vec3& axis, double angle) {
   return Mat3(Eigen::AngleAxisd(angle, Eigen::Vector3d(axis).normalized()).toRotationMatrix());
 }
 
-// A box solid of the given density: hull, centre, mass, inertia from its surface.
 SolidSpec box_solid(const Vec3& centre, const Vec3& size, double density, const Mat3& axes = Mat3::Identity()) {
-  const TriangleSurface s = box_surface(centre, size, axes);
-  const MassProperties m = mass_properties(s);
-  SolidSpec spec;
-  spec.hull = s;
-  spec.centre_of_mass = m.centroid;
-  spec.mass = density * m.volume;
-  spec.inertia = density * m.inertia;
-  return spec;
+  return testing::solid_box(centre, size, density, axes);
 }
 
 TEST(SolidBody, BoxMassPropertiesMatchClosedForms) {
