@@ -47,14 +47,22 @@ rigid::SolidSpec solid_spec(const YAML::Node& bn, const rigid::TriangleSurface& 
   static constexpr const char* components[] = {"x", "y", "z", "rx", "ry", "rz"};
   for (const auto& l : bn["locked"])
     for (int k = 0; k < 6; ++k) spec.locked[k] = spec.locked[k] || l.as<std::string>() == components[k];
+  // Bullet's angular factor masks a torque's world components, but the inertia tensor and the gyroscopic term still
+  // turn a body about a locked axis when it spins about another (measured: a box with ry locked spinning about x and
+  // z reached w_y = 0.46 rad/s): rotations are locked all three or none until a constraint holds single ones.
+  if (spec.locked[3] != spec.locked[4] || spec.locked[3] != spec.locked[5])
+    throw SceneError(path + ".locked", "lock the rotations rx, ry and rz all together or none of them (a single "
+                                       "rotation lock is not held in 3-D yet)");
   return spec;
 }
 
 // Boundary points of a box body in its own frame: the points (i + 1/2) h_a along each axis (h_a = its edge over
-// round(edge / dp)) within `layers` spacings of its surface. A point's depth and normal are those to the nearest point
-// outside the box: behind one face, that face's outward normal and distance; equally near two or three faces (an
-// edge or corner of the layer), towards that edge or corner, so that its mirror image lies in the fluid's corner, as
-// the tanks' walls do (fluid/box_walls.hpp).
+// round(edge / dp), so the wall layer lies h_a / 2 inside each face) within `layers` grid layers of its surface. A
+// point's layer is its least layer index over the axes; behind one face (one axis at that index) its normal is that
+// face's outward normal and its depth the distance to it; in the same layer behind two or three faces (along an edge
+// or at a corner of the layer) its normal points to that edge or corner and its depth is the distance to it, so that
+// its mirror image lies in the fluid's corner, as the tanks' walls do (fluid/box_walls.hpp) and the mitred corners of
+// 2-D outlines.
 std::vector<BoundaryPointOf<3>> box_body_points(const Vec<3>& size, const rigid::Mat3& axes, const Vec<3>& centre,
                                                 double dp, int layers) {
   std::array<long, 3> n{};
@@ -71,14 +79,18 @@ std::vector<BoundaryPointOf<3>> box_body_points(const Vec<3>& size, const rigid:
         const Vec<3> local((i + 0.5) * h[0] - 0.5 * size[0], (j + 0.5) * h[1] - 0.5 * size[1],
                            (k + 0.5) * h[2] - 0.5 * size[2]);
         Vec<3> to_face;  // per axis: the distance to the nearer face, signed by its side
-        for (int a = 0; a < 3; ++a) to_face[a] = std::copysign(0.5 * size[a] - std::abs(local[a]), local[a]);
-        const double nearest = to_face.cwiseAbs().minCoeff();
-        const int layer = static_cast<int>(std::floor(nearest / dp + 1e-9));
+        std::array<long, 3> index{};  // per axis: the grid layer, 0 next to the face
+        for (int a = 0; a < 3; ++a) {
+          const long cell = a == 0 ? i : a == 1 ? j : k;
+          to_face[a] = std::copysign(0.5 * size[a] - std::abs(local[a]), local[a]);
+          index[a] = std::min(cell, n[a] - 1 - cell);
+        }
+        const long layer = std::min({index[0], index[1], index[2]});
         if (layer >= layers) continue;
         Vec<3> out_dir = Vec<3>::Zero();
         for (int a = 0; a < 3; ++a)
-          if (std::abs(to_face[a]) <= nearest + eps) out_dir[a] = to_face[a];
-        out.push_back({centre + axes * local, Vec<3>(axes * out_dir.normalized()), out_dir.norm(), layer});
+          if (index[a] == layer) out_dir[a] = to_face[a];
+        out.push_back({centre + axes * local, Vec<3>(axes * out_dir.normalized()), out_dir.norm(), int(layer)});
       }
   return out;
 }

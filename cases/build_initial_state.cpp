@@ -23,13 +23,15 @@ template <int D>
 double downward_gravity(const SceneBuild<D>& b) { return -b.sim->options.gravity[D - 1]; }
 
 // Floating bodies go down with the water they rest on (free bodies only: a prescribed one keeps its law).
-void lower_free_bodies(SceneBuild<2>& b, const std::vector<double>& body_shift) {
-  Particles<2>& P = b.particles();
+template <int D>
+void lower_free_bodies(SceneBuild<D>& b, const std::vector<double>& body_shift) {
+  Particles<D>& P = b.particles();
   for (std::size_t k = 0; k < body_shift.size(); ++k) {
     if (body_shift[k] == 0.0 || b.bodies->motion[k].mode != BodyMotion::Mode::free) continue;
-    b.bodies->world.translate(int(k), rigid::Vec2(0.0, body_shift[k]));
+    if constexpr (D == 2) b.bodies->world.translate(int(k), rigid::Vec2(0.0, body_shift[k]));
+    else b.bodies->world.translate(int(k), rigid::Vec3(0.0, 0.0, body_shift[k]));
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.body_of(i) == int(k)) P.position[i][1] += body_shift[k];
+      if (P.body_of(i) == int(k)) P.position[i][D - 1] += body_shift[k];
   }
 }
 
@@ -82,7 +84,9 @@ void start_hydrostatic(SceneBuild<D>& b) {
       compress_hydrostatically<2>(b.particles(), dp, re, eos, g, true, column.gap_from_top, still_level, &body_shift);
       lower_free_bodies(b, body_shift);
     } else {
-      compress_hydrostatically<D>(b.particles(), dp, re, eos, g, true, {}, still_level);
+      std::vector<double> body_shift;
+      compress_hydrostatically<D>(b.particles(), dp, re, eos, g, true, {}, still_level, &body_shift);
+      lower_free_bodies(b, body_shift);
     }
   } catch (const std::runtime_error& e) {
     throw SceneError("method.initial_state", std::string("hydrostatic start failed: ") + e.what());

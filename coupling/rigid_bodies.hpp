@@ -102,7 +102,8 @@ class RigidBodies {
   }
 
   // Applies the poses at `time` (prescribed bodies) and sets every body particle's position, velocity, normal and
-  // acceleration from its body's pose. The acceleration is the rigid field a = A + alpha x r - omega^2 r, with A
+  // acceleration from its body's pose. The acceleration is the rigid field a = A + alpha x r + w x (w x r) (in 2-D
+  // the last term is -omega^2 r), with A
   // and alpha the body's mean accelerations since the previous placement (zero at the first one, or when time
   // went back, as after settling); the boundary pressure needs it (fluid/wall_pressure.hpp: head along g - a).
   void place_particles(Particles<D>& P, double time);

@@ -160,6 +160,10 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   impl_->journal.push_back(double(spec.hull.triangles.size()));
   for (const auto& t : spec.hull.triangles) impl_->journal.insert(impl_->journal.end(), {double(t[0]), double(t[1]), double(t[2])});
   if (!(spec.mass > 0.0)) throw std::invalid_argument("a body needs a positive mass");
+  // The angular factor masks torques in world axes, but the inertia and the gyroscopic term still couple the axes:
+  // only all three rotations or none can be held.
+  if (spec.locked[3] != spec.locked[4] || spec.locked[3] != spec.locked[5])
+    throw std::invalid_argument("a solid body's rotations are locked all three or none");
   // The principal axes: Bullet takes a diagonal inertia in the body's frame.
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
   Eigen::Vector3d principal(spec.inertia(0, 0), spec.inertia(1, 1), spec.inertia(2, 2));
@@ -277,7 +281,11 @@ SpatialState RigidWorld::spatial_state(int i) const {
 }
 
 double RigidWorld::mass(int i) const { return impl_->bodies.at(i).mass; }
-double RigidWorld::inertia(int i) const { return impl_->bodies.at(i).spec.inertia; }
+double RigidWorld::inertia(int i) const {
+  const auto& b = impl_->bodies.at(i);
+  if (!b.planar) throw std::logic_error("the planar inertia of a solid body");
+  return b.spec.inertia;
+}
 
 void RigidWorld::set_held(int i, bool held) {
   auto& b = impl_->bodies.at(i);
@@ -322,6 +330,7 @@ void move_by(btRigidBody& rigid, btMotionState& motion, const btVector3& delta) 
 void RigidWorld::translate(int i, const Vec2& delta) {
   impl_->record(Op::translate, {double(i), delta[0], delta[1]});
   auto& b = impl_->bodies.at(i);
+  if (!b.planar) throw std::logic_error("a 2-D translation of a solid body");
   move_by(*b.rigid, *b.motion, v3(delta));
   b.kinematic_state.position += delta;
 }
@@ -336,6 +345,7 @@ void RigidWorld::translate(int i, const Vec3& delta) {
 void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_velocity) {
   impl_->record(Op::set_velocity, {double(i), velocity[0], velocity[1], angular_velocity});
   auto& b = impl_->bodies.at(i);
+  if (!b.planar) throw std::logic_error("a 2-D velocity of a solid body");
   b.rigid->setLinearVelocity(v3(velocity));
   b.rigid->setAngularVelocity(btVector3(0, 0, angular_velocity));
 }
@@ -351,6 +361,7 @@ void RigidWorld::set_velocity(int i, const Vec3& velocity, const Vec3& angular_v
 
 void RigidWorld::apply_force(int i, const Vec2& force, double torque) {
   auto& b = impl_->bodies.at(i);
+  if (!b.planar) throw std::logic_error("a 2-D force on a solid body");
   if (b.spec.kinematic) return;
   impl_->record(Op::apply_force, {double(i), force[0], force[1], torque});
   b.rigid->applyCentralForce(v3(force));

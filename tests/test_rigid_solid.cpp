@@ -166,6 +166,17 @@ TEST(SolidBody, OrientationCountsFromCreationForATurnedBody) {
   EXPECT_NEAR(w.spatial_state(b).orientation.angularDistance(Quat::Identity()), 0.0, 1e-12);
   EXPECT_NEAR((w.spatial_state(b).position - Vec3(0.5, 0.5, 0.5)).norm(), 0.0, 1e-14);
   EXPECT_THROW(w.state(b), std::logic_error);  // a solid body has no planar state
+  // Set spinning about world z (not a principal axis of the turned box, so only one short step, over which the
+  // rotation stays about z to first order): the orientation counted from creation is a turn of w dt about z.
+  w.set_velocity(b, Vec3::Zero(), Vec3(0.0, 0.0, 1.0));
+  w.step(1e-4);
+  const Eigen::AngleAxisd turned{Eigen::Quaterniond(w.spatial_state(b).orientation)};
+  EXPECT_NEAR(turned.angle(), 1e-4, 1e-9);
+  EXPECT_NEAR(std::abs(turned.axis()[2]), 1.0, 1e-4);
+  // Single rotation locks are refused (the inertia couples the axes).
+  SolidSpec one_lock = box_solid(Vec3(0.5, 0.5, 0.5), Vec3(0.3, 0.2, 0.1), 700.0);
+  one_lock.locked = {false, false, false, false, true, false};
+  EXPECT_THROW(w.add_solid(one_lock), std::invalid_argument);
 }
 
 TEST(SolidBody, JournalReplaysToTheSameBits) {

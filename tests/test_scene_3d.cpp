@@ -105,6 +105,7 @@ TEST(Scene3D, RefusesBadBodiesNamingTheKey) {
   EXPECT_EQ(refusal_key(with(", density: 600, mass: 1")), "bodies[0].density");
   EXPECT_EQ(refusal_key(with("")), "bodies[0].density");
   EXPECT_EQ(refusal_key(with(", density: 600, locked: [w]")), "bodies[0].locked[0]");
+  EXPECT_EQ(refusal_key(with(", density: 600, locked: [ry]")), "bodies[0].locked");
   EXPECT_EQ(refusal_key(with(", density: 600, motion: prescribed")), "bodies[0].motion");  // not in 3-D yet
   EXPECT_EQ(refusal_key(with(", density: 600, during_settling: free")), "bodies[0].during_settling");  // no settling
   std::string outside = with(", density: 600");

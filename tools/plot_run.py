@@ -74,7 +74,7 @@ def plot_gauges(runs, target):
 
 
 def plot_bodies(runs, target):
-    """2-D bodies.csv: x, y, angle; 3-D: x, y, z and the orientation (roll, pitch, yaw and the quaternion's angle)."""
+    """2-D bodies.csv: x, y, angle; 3-D: x, y, z and the orientation as roll, pitch and yaw."""
     fig, axes = plt.subplots(2, 2, figsize=(11, 7))
     three_d = False
     for run in runs:

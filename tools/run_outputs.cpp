@@ -103,7 +103,9 @@ std::vector<double> body_row(const RigidBodies<D>& bodies, int b, const typename
             s.angular_velocity, f.total()[0], f.total()[1], f.total_torque(), f.pressure[0],
             f.pressure[1], f.pressure_torque, f.viscous[0], f.viscous[1], f.viscous_torque, c[0], c[1]};
   } else {
-    const rigid::Quat q = bodies.absolute_orientation(b);
+    // q and -q are the same rotation; Bullet's may change sign between rows, so bodies.csv keeps qw >= 0.
+    rigid::Quat q = bodies.absolute_orientation(b);
+    if (q.w() < 0.0) q.coeffs() *= -1.0;
     const Eigen::Matrix3d R = Eigen::Quaterniond(q).toRotationMatrix();
     const double roll = std::atan2(R(2, 1), R(2, 2)), pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)),
                  yaw = std::atan2(R(1, 0), R(0, 0));
