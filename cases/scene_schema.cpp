@@ -328,11 +328,6 @@ Schema dimension_schema() {
 }
 
 // 3-D scenes (dimension: 3): the keys that exist in 3-D so far (issue 31 grows them: meshes, terrain).
-Schema box_schema(std::string doc) {
-  return S::map(std::move(doc), {{"min", S::vector("lower corner", "m", 3, std::nullopt)},
-                                 {"max", S::vector("upper corner", "m", 3, std::nullopt)}});
-}
-
 Schema region_schema_3d() {
   return S::variant(
       "a region filled with fluid particles on the scene's lattice (fluid/lattice.hpp)",
