@@ -11,28 +11,24 @@
 
 #include "cases/body_choices.hpp"
 #include "cases/scene_build.hpp"
+#include "cases/solid_shape.hpp"
 #include "coupling/position_text.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
 namespace {
 
-// R = Rz(yaw) Ry(pitch) Rx(roll), from shape.angles = [roll, pitch, yaw] in degrees (bodies.csv's convention).
-rigid::Mat3 box_axes(const YAML::Node& shape) {
-  const Vec<3> a = vec_of<3>(shape["angles"]) * (M_PI / 180.0);
-  return rigid::Mat3(Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitY()) *
-                     Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitX()));
+// The shape of bodies[k] as the scene states it, cut by the symmetry planes; with its boundary points when
+// `with_points`.
+SolidShape body_shape(const SceneBuild<3>& b, const YAML::Node& bn, const std::string& path, bool with_points) {
+  return solid_shape(bn["shape"], path, symmetry_planes(b.r), b.dp,
+                     with_points ? boundary_layers(b.sim->options.re_over_dp) : 0);
 }
 
-rigid::TriangleSurface body_surface(const YAML::Node& bn, const std::string& path) {
-  const YAML::Node sh = bn["shape"];
-  const Vec<3> size = vec_of<3>(sh["size"]);
-  if (!(size.minCoeff() > 0.0)) throw SceneError(path + ".shape.size", "every edge length must be positive");
-  return rigid::box_surface(vec_of<3>(sh["center"]), size, box_axes(sh));
-}
-
-// Mass from density or mass, and the inertia tensor from the surface (uniform density).
-rigid::SolidSpec solid_spec(const YAML::Node& bn, const rigid::TriangleSurface& surface, const std::string& path) {
+// Mass from density or mass, and the inertia tensor from the surface (uniform density). A body cut by a symmetry
+// plane is its part on the scene's side: `mass` states the whole body's, of which the part has its share of the volume.
+rigid::SolidSpec solid_spec(const YAML::Node& bn, const SolidShape& shape, const std::string& path) {
+  const rigid::TriangleSurface& surface = shape.surface;
   const rigid::MassProperties m = rigid::mass_properties(surface);
   const double density_key = bn["density"].as<double>(), mass_key = bn["mass"].as<double>();
   if ((density_key > 0) == (mass_key > 0))
@@ -40,7 +36,7 @@ rigid::SolidSpec solid_spec(const YAML::Node& bn, const rigid::TriangleSurface& 
   rigid::SolidSpec spec;
   spec.hull = surface;
   spec.centre_of_mass = m.centroid;
-  spec.mass = mass_key > 0 ? mass_key : density_key * m.volume;
+  spec.mass = mass_key > 0 ? mass_key * (m.volume / shape.whole_volume) : density_key * m.volume;
   spec.inertia = (spec.mass / m.volume) * m.inertia;
   spec.friction = bn["friction"].as<double>();
   spec.restitution = bn["restitution"].as<double>();
@@ -56,54 +52,35 @@ rigid::SolidSpec solid_spec(const YAML::Node& bn, const rigid::TriangleSurface& 
   return spec;
 }
 
-// Boundary points of a box body in its own frame: the points (i + 1/2) h_a along each axis (h_a = its edge over
-// round(edge / dp), so the wall layer lies h_a / 2 inside each face) within `layers` grid layers of its surface. A
-// point's layer is its least layer index over the axes; behind one face (one axis at that index) its normal is that
-// face's outward normal and its depth the distance to it; in the same layer behind two or three faces (along an edge
-// or at a corner of the layer) its normal points to that edge or corner and its depth is the distance to it, so that
-// its mirror image lies in the fluid's corner, as the tanks' walls do (fluid/box_walls.hpp) and the mitred corners of
-// 2-D outlines.
-std::vector<BoundaryPointOf<3>> box_body_points(const Vec<3>& size, const rigid::Mat3& axes, const Vec<3>& centre,
-                                                double dp, int layers) {
-  std::array<long, 3> n{};
-  Vec<3> h;
-  for (int a = 0; a < 3; ++a) {
-    n[a] = std::max(1L, std::lround(size[a] / dp));
-    h[a] = size[a] / double(n[a]);
-  }
-  const double eps = 1e-9 * dp;
-  std::vector<BoundaryPointOf<3>> out;
-  for (long i = 0; i < n[0]; ++i)
-    for (long j = 0; j < n[1]; ++j)
-      for (long k = 0; k < n[2]; ++k) {
-        const Vec<3> local((i + 0.5) * h[0] - 0.5 * size[0], (j + 0.5) * h[1] - 0.5 * size[1],
-                           (k + 0.5) * h[2] - 0.5 * size[2]);
-        Vec<3> to_face;  // per axis: the distance to the nearer face, signed by its side
-        std::array<long, 3> index{};  // per axis: the grid layer, 0 next to the face
-        for (int a = 0; a < 3; ++a) {
-          const long cell = a == 0 ? i : a == 1 ? j : k;
-          to_face[a] = std::copysign(0.5 * size[a] - std::abs(local[a]), local[a]);
-          index[a] = std::min(cell, n[a] - 1 - cell);
-        }
-        const long layer = std::min({index[0], index[1], index[2]});
-        if (layer >= layers) continue;
-        Vec<3> out_dir = Vec<3>::Zero();
-        for (int a = 0; a < 3; ++a)
-          if (index[a] == layer) out_dir[a] = to_face[a];
-        out.push_back({centre + axes * local, Vec<3>(axes * out_dir.normalized()), out_dir.norm(), int(layer)});
-      }
-  return out;
-}
-
 // Every vertex inside a tank (when the scene has tanks): a body behind a wall would hold water on both sides of it.
 void check_inside_tanks(const SceneBuild<3>& b, const rigid::TriangleSurface& surface, const std::string& path) {
   if (b.tanks.empty()) return;
+  const double e = 1e-9 * b.dp;  // a cut body's cap lies on its symmetry face
   for (const auto& v : surface.vertices) {
     bool inside = false;
     for (const auto& [lo, hi] : b.tanks)
-      inside = inside || (v[0] >= lo[0] && v[0] <= hi[0] && v[1] >= lo[1] && v[1] <= hi[1] && v[2] >= lo[2]);
+      inside = inside || (v[0] >= lo[0] - e && v[0] <= hi[0] + e && v[1] >= lo[1] - e && v[1] <= hi[1] + e &&
+                          v[2] >= lo[2] - e);
     if (!inside)
       throw SceneError(path + ".shape", fmt::format("corner {} lies outside every tank", position_text<3>(Vec<3>(v))));
+  }
+}
+
+// A body cut by a symmetry plane moves as its mirror image does: along the plane, without turning (rotations are
+// locked all three or none). The scene says so: locked holds the plane's normal translation and rx, ry, rz.
+void check_symmetry_locks(const SceneBuild<3>& b, const SolidShape& shape, const rigid::SolidSpec& spec,
+                          const std::string& path) {
+  if (!shape.cut()) return;
+  for (const auto& plane : symmetry_planes(b.r)) {
+    const bool on_it = std::any_of(shape.surface.vertices.begin(), shape.surface.vertices.end(), [&](const auto& v) {
+      return std::abs(plane.normal.dot(Vec<3>(v)) - plane.offset) <= 1e-9 * b.dp;
+    });
+    if (!on_it) continue;
+    const int axis = plane.normal[0] != 0.0 ? 0 : 1;
+    if (!spec.locked[axis] || !spec.locked[3])
+      throw SceneError(path + ".locked", fmt::format("the symmetry plane {} cuts this body, which must then move along "
+                                                     "it without turning: lock {} and rx, ry, rz",
+                                                     plane.key, "xy"[axis]));
   }
 }
 
@@ -113,16 +90,23 @@ std::shared_ptr<RigidBodies<3>> make_rigid_world(const SceneBuild<3>& b) {
                                                  b.r["rigid"]["collision_margin"].as<double>() * b.dp);
   if (!b.r["rigid"]["wall_contact"].as<bool>()) return bodies;
   const double t = 10.0 * b.dp;
+  const auto planes = symmetry_planes(b.r);
   for (const auto& [lo, hi] : b.tanks) {
     const Vec<3> outer_lo = lo - Vec<3>::Constant(t);
     Vec<3> outer_hi = hi + Vec<3>::Constant(t);
     outer_hi[2] = hi[2];
+    // A symmetry face is no wall for a body: the body's part beyond it is its mirror image.
+    const auto symmetry = [&](int axis, double side, double at) {
+      for (const auto& plane : planes)
+        if (plane.normal[axis] == side && std::abs(side * plane.offset - at) <= 1e-9 * b.dp) return true;
+      return false;
+    };
     auto add = [&](Vec<3> a, Vec<3> c) { bodies->world.add_static_box(a, c, 1.0, 1.0); };
-    add(outer_lo, Vec<3>(outer_hi[0], outer_hi[1], lo[2]));                      // floor
-    add(outer_lo, Vec<3>(lo[0], outer_hi[1], hi[2]));                           // -x
-    add(Vec<3>(hi[0], outer_lo[1], outer_lo[2]), outer_hi);                      // +x
-    add(outer_lo, Vec<3>(outer_hi[0], lo[1], hi[2]));                           // -y
-    add(Vec<3>(outer_lo[0], hi[1], outer_lo[2]), outer_hi);                      // +y
+    add(outer_lo, Vec<3>(outer_hi[0], outer_hi[1], lo[2]));                                       // floor
+    if (!symmetry(0, -1.0, lo[0])) add(outer_lo, Vec<3>(lo[0], outer_hi[1], hi[2]));             // -x
+    if (!symmetry(0, 1.0, hi[0])) add(Vec<3>(hi[0], outer_lo[1], outer_lo[2]), outer_hi);        // +x
+    if (!symmetry(1, -1.0, lo[1])) add(outer_lo, Vec<3>(outer_hi[0], lo[1], hi[2]));             // -y
+    if (!symmetry(1, 1.0, hi[1])) add(Vec<3>(outer_lo[0], hi[1], outer_lo[2]), outer_hi);        // +y
   }
   return bodies;
 }
@@ -155,8 +139,9 @@ void place_floating_bodies(SceneBuild<3>& b) {
     YAML::Node bn = bodies[k];
     if (bn["during_settling"].as<std::string>() != to_string(DuringSettling::free)) continue;
     const std::string path = fmt::format("bodies[{}]", k);
-    const rigid::TriangleSurface surface = body_surface(bn, path);
-    const double mass = solid_spec(bn, surface, path).mass;
+    const SolidShape shape = body_shape(b, bn, path, false);
+    const rigid::TriangleSurface& surface = shape.surface;
+    const double mass = solid_spec(bn, shape, path).mass;
     if (mass >= water_density * rigid::mass_properties(surface).volume) continue;  // it sinks
     const double rise = rise_to_draft(surface, mass, water_density, level);
     if (std::abs(rise) < 1e-9 * b.dp) continue;
@@ -176,9 +161,14 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     const YAML::Node bn = list[k];
     const std::string path = fmt::format("bodies[{}]", k);
     const std::string name = unique_body_name(names, bn, k);
-    const rigid::TriangleSurface surface = body_surface(bn, path);
+    const SolidShape shape = body_shape(b, bn, path, true);
+    const rigid::TriangleSurface& surface = shape.surface;
     check_inside_tanks(b, surface, path);
-    const rigid::SolidSpec spec = solid_spec(bn, surface, path);
+    const rigid::SolidSpec spec = solid_spec(bn, shape, path);
+    check_symmetry_locks(b, shape, spec, path);
+    rigid::SolidSpec collision = spec;
+    collision.hull = shape.inset(b.r["rigid"]["collision_margin"].as<double>() * b.dp);
+    collision.hull_inset = true;
     BodyMotion motion;
     motion.release_time = bn["release_time"].as<double>();
     motion.free_while_settling =
@@ -188,10 +178,10 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     if (motion.free_while_settling && b.initial_state != InitialState::settled)
       throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
                                                   "otherwise)");
-    const rigid::Mat3 axes = box_axes(bn["shape"]);
+    const rigid::Mat3& axes = shape.axes;
     int body = 0;
     try {
-      body = b.bodies->add(name, spec, motion, spec.mass / rigid::mass_properties(surface).volume,
+      body = b.bodies->add(name, collision, motion, spec.mass / rigid::mass_properties(surface).volume,
                            rigid::Quat(Eigen::Quaterniond(Eigen::Matrix3d(axes))));
     } catch (const std::invalid_argument& e) {
       throw SceneError(path + ".shape", e.what());
@@ -208,8 +198,7 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     rep.free_while_settling = motion.free_while_settling;
     for (const auto& [moved, rise] : b.moved_to_draft)
       if (moved == path) rep.moved_to_draft = rise;
-    const auto pts = box_body_points(vec_of<3>(bn["shape"]["size"]), axes, vec_of<3>(bn["shape"]["center"]), b.dp,
-                                     boundary_layers(b.sim->options.re_over_dp));
+    const auto& pts = shape.points;
     for (const auto& bp : pts) {
       const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, 0.0);
       P.wall_normal[i] = bp.normal;
@@ -220,15 +209,15 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     rep.particles = pts.size();
     b.scene->bodies.push_back(rep);
     b.solids.push_back(surface);
+    b.solid_distance.push_back(shape.signed_distance);
   }
 }
 
 // Whether p lies inside a body or within dp/2 of its surface: no water there (the body's wall layer lies dp/2
 // inside it, and water keeps 0.75 dp from boundary particles: check_overlaps).
 int body_near(const SceneBuild<3>& b, const Vec<3>& p) {
-  for (std::size_t k = 0; k < b.solids.size(); ++k)
-    if (rigid::inside_convex(b.solids[k], p) || rigid::distance_to_surface(b.solids[k], p) < 0.5 * b.dp - 1e-9 * b.dp)
-      return static_cast<int>(k);
+  for (std::size_t k = 0; k < b.solid_distance.size(); ++k)
+    if (b.solid_distance[k](p) < 0.5 * b.dp - 1e-9 * b.dp) return static_cast<int>(k);
   return -1;
 }
 

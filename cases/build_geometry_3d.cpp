@@ -60,6 +60,11 @@ void build_walls(SceneBuild<3>& b) {
     const auto wn = b.r["walls"][w];
     const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
     if (b.sim->options.lattice == LatticeKind::square) check_on_the_cubic_lattice(lo, hi, b.dp, w);
+    // A plane of symmetry holds no shear: the walls are all of method.wall_slip's kind so far.
+    if (wn["symmetry"].size() > 0 && b.sim->options.wall_slip != WallSlip::free_slip)
+      throw SceneError(fmt::format("walls[{}].symmetry", w), "a side of symmetry is free-slip: set method.wall_slip: "
+                                                             "free_slip (every wall takes it; one slip per wall is not "
+                                                             "offered yet)");
     std::vector<BoundaryPointOf<3>> pts;
     try {
       const FluidOptions<3>& opt = b.sim->options;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -78,6 +79,7 @@ struct SceneBuild {
   std::shared_ptr<RigidBodies<D>> bodies;
   std::vector<std::vector<rigid::Vec2>> outlines;
   std::vector<rigid::TriangleSurface> solids;  // 3-D: each rigid body's surface (world, t = 0)
+  std::vector<std::function<double(const Vec<3>&)>> solid_distance;  // 3-D: each one's signed distance, m
   struct Slide {
     std::string path;  // bodies[k]
     std::vector<rigid::Vec2> outline;

@@ -163,8 +163,10 @@ Schema method_schema() {
        {"free_surface_beta",
         S::number("free-surface threshold: n < beta n0 is a free-surface particle (its pressure: method.surface_pressure)", "", 0.97, 0.0, 1.0, true, false)},
        {"clamp_negative_pressure", S::boolean("set negative pressures to zero", true)},
-       {"surface_pressure", S::choice("pressure of free-surface particles (n < beta n0): zero, or extrapolated from "
-                                      "the bulk neighbours with the hydrostatic head (fluid/free_surface_pressure.hpp)",
+       {"surface_pressure", S::choice("pressure of free-surface particles (n < beta n0): zero; half_layer, the head of "
+                                      "the half layer above them (still water, floating bodies); or extrapolated from "
+                                      "the bulk neighbours with the hydrostatic head, which drives the water column's "
+                                      "acoustic mode (fluid/free_surface_pressure.hpp)",
                                       surface_pressure_names.names(), std::string(to_string(MethodOptions{}.surface_pressure)))},
        {"wall_slip", S::choice("wall condition for viscosity: no_slip mirrors the fluid velocity into the wall "
                                "(Morris et al. 1997), free_slip leaves walls out of the viscous term",
@@ -355,7 +357,12 @@ Schema wall_schema_3d() {
                         {"min", S::vector("lower corner of the inside", "m", 3, std::nullopt)},
                         {"max", S::vector("upper corner of the inside (max.z: the sides' top)", "m", 3, std::nullopt)},
                         {"layers", S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover "
-                                              "the kernel", 0L, 0L, 10L)}})}});
+                                              "the kernel", 0L, 0L, 10L)},
+                        {"symmetry", S::list("sides that are planes of symmetry: the scene is the half (or quarter) of a "
+                                             "symmetric one on this side of them. They are walls, free-slip (needs "
+                                             "method.wall_slip: free_slip), and no wall for bodies: a body they cut is "
+                                             "its part on this side, and moves along them without turning",
+                                             S::choice("side", {"x_min", "x_max", "y_min", "y_max"}, std::nullopt))}})}});
 }
 
 Schema gauge_schema_3d() {
@@ -382,8 +389,8 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: box shapes, free motion (prescribed motion, deformable "
-      "slides and other shapes are 2-D only yet)",
+      "its faces) exchange forces with the fluid. 3-D so far: boxes and spheres, free motion (prescribed motion, "
+      "deformable slides and other shapes are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"shape",
         S::variant("the body's shape", "type",
@@ -392,9 +399,13 @@ Schema body_schema_3d() {
                                                                 std::nullopt, 0.0)},
                                              {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
                                                                   "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
-                                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}})},
+                                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
+                    {"sphere", S::map("a sphere", {{"center", S::vector("centre", "m", 3, std::nullopt)},
+                                                   {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true,
+                                                                        false)}})}})},
        {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, S::inf)},
-       {"mass", S::number("mass; 0 = density times volume", "kg", 0.0, 0.0, S::inf)},
+       {"mass", S::number("mass (the whole body's where a symmetry side cuts it); 0 = density times volume", "kg",
+                          0.0, 0.0, S::inf)},
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
        {"locked", S::list("components held fixed: x, y, z (translations), rx, ry, rz (rotations about the axes)",

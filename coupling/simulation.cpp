@@ -152,6 +152,8 @@ void Simulation<D>::compute_pressure() {
   const std::vector<double>* fill = options.wall_pressure == WP::mirror ? &P.wall_fill : nullptr;
   const double surface_n = options.free_surface_beta * lattice.n0;
   const bool corrected = options.gradient == GradientModel::corrected;
+  const bool half_layer = options.surface_pressure == SurfacePressure::half_layer;
+  const double gravity = options.gravity.norm(), layer = row_spacing(options.lattice, options.dp);
   if (corrected) P.gradient_correction.resize(P.size());
   // A fluid particle's pressure follows from its own number density (seed eq. 7), and the corrected gradient's
   // matrix from the pair factors just kept (boundary particles keep the identity): in the same pass.
@@ -168,7 +170,9 @@ void Simulation<D>::compute_pressure() {
       P.gradient_correction[i] = fluid && n_i >= surface_n ? faded_inverse<D>(moment, lattice.kappa * lattice.n0)
                                                            : Mat<D>::Identity();
     if (!fluid) return;
-    double p = n_i < surface_n ? 0.0 : eos.pressure(n_i, P.density[i]);
+    double p = n_i >= surface_n ? eos.pressure(n_i, P.density[i])
+               : half_layer ? half_layer_pressure(P.density[i], gravity, layer)
+                            : 0.0;  // extrapolated below, from the bulk's final pressures
     if (options.clamp_negative_pressure && p < 0.0) p = 0.0;
     P.pressure[i] = p;
   });

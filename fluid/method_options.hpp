@@ -35,7 +35,9 @@ inline std::string_view to_string(ViscousScheme s) { return viscous_scheme_names
 //  * surface_pressure zero: extrapolating the bulk's pressure with the hydrostatic head is right only where the water
 //    near its surface is at rest (fluid/free_surface_pressure.hpp); with it a released column's wall force is
 //    4.9 % / 7.4 % off at a/20 / a/40 (zero: 2.4 % / 1.3 %, tests/test_wall_models.cpp) and an accelerated tank's
-//    surface tilts 2.25 % off (zero: 0.67 %). Floating bodies in still water choose it (cases/floating_block_2d.yaml).
+//    surface tilts 2.25 % off (zero: 0.67 %). Still water and floating bodies choose half_layer, which holds still
+//    water at rest where zero lets its surface stir and extrapolated drives its acoustic mode
+//    (fluid/free_surface_pressure.hpp, cases/floating_block_2d.yaml, cases/hydrostatic_3d.yaml).
 struct MethodOptions {
   double dp = 0.01;                 // particle spacing, m
   double re_over_dp = 2.1;          // kernel radius in spacings

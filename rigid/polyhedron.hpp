@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -64,9 +65,10 @@ inline Vec3 outward_normal(const TriangleSurface& s, const std::array<int, 3>& t
 
 // A convex surface's vertices moved inwards by `margin`: each vertex by the smallest displacement d with n . d =
 // -margin for the outward normal n of every face it touches (exact where three faces meet; the least-squares
-// compromise where more do). Bullet adds its collision margin around a convex hull, so this hull with the margin
-// collides at the true surface, its edges rounded. Throws std::invalid_argument where an inset vertex does not lie
-// `margin` inside every face (the body is too thin for the margin).
+// compromise where more do, lengthened where it falls short of the margin behind one of them). Bullet adds its collision margin around a convex hull, so this hull with the margin
+// collides at the true surface, its edges rounded. Throws std::invalid_argument where an inset vertex lies less than
+// half the margin inside some face (the body is too thin for the margin: under 1.5 margins across). Not the whole
+// margin: a vertex near a face it does not touch (a sphere's, near a plane that cuts it) may stand a little closer.
 inline std::vector<Vec3> inset_convex(const TriangleSurface& s, double margin) {
   std::vector<std::vector<Vec3>> normals(s.vertices.size());
   for (const auto& t : s.triangles) {
@@ -83,13 +85,17 @@ inline std::vector<Vec3> inset_convex(const TriangleSurface& s, double margin) {
     Eigen::MatrixXd A(normals[v].size(), 3);
     for (std::size_t k = 0; k < normals[v].size(); ++k) A.row(Eigen::Index(k)) = normals[v][k].transpose();
     const Eigen::VectorXd rhs = Eigen::VectorXd::Constant(A.rows(), -margin);
-    const Eigen::Vector3d d = A.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(rhs);
-    out.push_back(s.vertices[v] + Vec3(d));
+    Vec3 d = A.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(rhs);
+    // Where the compromise leaves it short of `margin` behind one of its faces, lengthened until it is not.
+    double stretch = 1.0;
+    for (const Vec3& n : normals[v])
+      if (n.dot(d) < 0.0) stretch = std::max(stretch, -margin / n.dot(d));
+    out.push_back(s.vertices[v] + stretch * d);
   }
   for (const auto& t : s.triangles) {
     const Vec3 n = outward_normal(s, t);
     for (const Vec3& p : out)
-      if (n.dot(p - s.vertices[t[0]]) > -margin * (1.0 - 1e-6))
+      if (n.dot(p - s.vertices[t[0]]) > -0.5 * margin)
         throw std::invalid_argument("a body too thin for the collision margin");
   }
   return out;
@@ -165,6 +171,95 @@ inline TriangleSurface box_surface(const Vec3& centre, const Vec3& size, const M
                  {2, 6, 7}, {2, 7, 3},   // +y
                  {0, 4, 6}, {0, 6, 2},   // -x
                  {1, 3, 7}, {1, 7, 5}};  // +x
+  return s;
+}
+
+// The part of a convex surface on the side n . x <= offset of a plane (n a unit vector), closed by the cap the plane
+// cuts: each triangle clipped (Sutherland-Hodgman against the one plane) and fanned, the cap the convex polygon of the
+// cut points ordered by angle about their mean, fanned with its normal n. Slivers of no area are dropped. The surface
+// unchanged where it lies wholly on the kept side; throws std::invalid_argument where nothing of it is kept.
+inline TriangleSurface clip_convex(const TriangleSurface& s, const Vec3& n, double offset) {
+  TriangleSurface out;
+  std::vector<Vec3> cut;
+  // Triangles share their corners (inset_convex moves a corner by all the faces it touches): points within a
+  // billionth of the surface's size are one.
+  double size = 0.0;
+  for (const auto& v : s.vertices) size = std::max(size, (v - s.vertices[0]).norm());
+  const double merge = 1e-9 * std::max(size, 1e-300);
+  std::map<std::array<long long, 3>, int> index;
+  const auto vertex = [&](const Vec3& p) {
+    const std::array<long long, 3> key{std::llround(p[0] / merge), std::llround(p[1] / merge), std::llround(p[2] / merge)};
+    const auto [it, added] = index.emplace(key, static_cast<int>(out.vertices.size()));
+    if (added) out.vertices.push_back(p);
+    return it->second;
+  };
+  const auto add_triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    if ((b - a).cross(c - a).norm() <= 1e-14 * std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), 1e-300})) return;
+    const std::array<int, 3> t{vertex(a), vertex(b), vertex(c)};
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) out.triangles.push_back(t);
+  };
+  for (const auto& t : s.triangles) {
+    Vec3 kept[4];
+    int m = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& a = s.vertices[t[k]];
+      const Vec3& b = s.vertices[t[(k + 1) % 3]];
+      // A corner within `merge` of the plane lies on it: no sliver between it and the cut.
+      const auto side = [&](const Vec3& p) { const double d = n.dot(p) - offset; return std::abs(d) <= merge ? 0.0 : d; };
+      const double da = side(a), db = side(b);
+      if (da <= 0.0) kept[m++] = a;
+      if (da == 0.0) cut.push_back(a);
+      if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) {
+        kept[m++] = a + (da / (da - db)) * (b - a);
+        cut.push_back(kept[m - 1]);
+      }
+    }
+    for (int k = 1; k + 1 < m; ++k) add_triangle(kept[0], kept[k], kept[k + 1]);
+  }
+  if (out.triangles.empty()) throw std::invalid_argument("the plane leaves nothing of the surface");
+  if (cut.size() < 3) return out;
+  Vec3 mean = Vec3::Zero();
+  for (const auto& c : cut) mean += c;
+  mean /= double(cut.size());
+  // In-plane axes u, v with u x v = n, so that counter-clockwise by angle is counter-clockwise seen along n.
+  const Vec3 u = (std::abs(n[0]) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), v = n.cross(u);
+  std::vector<std::pair<double, Vec3>> ring;
+  for (const auto& c : cut) ring.emplace_back(std::atan2((c - mean).dot(v), (c - mean).dot(u)), c);
+  std::sort(ring.begin(), ring.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 0; k < ring.size(); ++k)
+    add_triangle(mean, ring[k].second, ring[(k + 1) % ring.size()].second);
+  return out;
+}
+
+// A sphere as a latitude-longitude surface of `rings` bands (even) and 2 rings meridians, so that it is symmetric
+// about the planes through its centre normal to x, y and z (a sphere cut by them keeps its share of the volume
+// exactly). Its vertices lie on the sphere of radius radius (V / V_polyhedron)^(1/3), which gives the polyhedron the
+// sphere's volume exactly; its inertia is then within 1.2e-3 of 2/5 m R^2 at 48 rings (tests/test_rigid_solid.cpp).
+inline TriangleSurface sphere_surface(const Vec3& centre, double radius, int rings = 48) {
+  if (rings < 4 || rings % 2) throw std::invalid_argument("a sphere needs an even number of rings, at least 4");
+  const int meridians = 2 * rings;
+  TriangleSurface s;
+  s.vertices.push_back(Vec3(0.0, 0.0, -1.0));
+  for (int i = 1; i < rings; ++i) {
+    const double theta = M_PI * i / rings;  // from the south pole
+    for (int j = 0; j < meridians; ++j) {
+      const double phi = 2.0 * M_PI * j / meridians;
+      s.vertices.push_back(Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta)));
+    }
+  }
+  s.vertices.push_back(Vec3(0.0, 0.0, 1.0));
+  const int north = static_cast<int>(s.vertices.size()) - 1;
+  const auto at = [&](int ring, int j) { return 1 + (ring - 1) * meridians + (j % meridians); };
+  for (int j = 0; j < meridians; ++j) {
+    s.triangles.push_back({0, at(1, j + 1), at(1, j)});
+    s.triangles.push_back({north, at(rings - 1, j), at(rings - 1, j + 1)});
+    for (int i = 1; i + 1 < rings; ++i) {
+      s.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    }
+  }
+  const double scale = radius * std::cbrt((4.0 / 3.0) * M_PI / mass_properties(s).volume);
+  for (auto& v : s.vertices) v = centre + scale * v;
   return s;
 }
 

@@ -153,7 +153,7 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   impl_->record(Op::add_solid, {double(spec.locked[0]), double(spec.locked[1]), double(spec.locked[2]),
                                 double(spec.locked[3]), double(spec.locked[4]), double(spec.locked[5]), spec.mass,
                                 spec.friction, spec.restitution, spec.centre_of_mass[0], spec.centre_of_mass[1],
-                                spec.centre_of_mass[2]});
+                                spec.centre_of_mass[2], double(spec.hull_inset)});
   impl_->journal.insert(impl_->journal.end(), spec.inertia.data(), spec.inertia.data() + 9);
   impl_->journal.push_back(double(spec.hull.vertices.size()));
   for (const Vec3& p : spec.hull.vertices) impl_->journal.insert(impl_->journal.end(), {p[0], p[1], p[2]});
@@ -185,7 +185,7 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   if (!diagonal) b.principal_to_placed = to_principal.inverse();
   b.shape = std::make_unique<btConvexHullShape>();
   const btMatrix3x3 to_body = basis.transpose();
-  for (const Vec3& p : inset_convex(spec.hull, impl_->margin))
+  for (const Vec3& p : spec.hull_inset ? spec.hull.vertices : inset_convex(spec.hull, impl_->margin))
     b.shape->addPoint(to_body * v3(Vec3(p - spec.centre_of_mass)), false);
   b.shape->recalcLocalAabb();
   b.shape->setMargin(impl_->margin);
@@ -484,6 +484,7 @@ void RigidWorld::replay(const std::vector<double>& journal) {
         spec.friction = next();
         spec.restitution = next();
         spec.centre_of_mass = vec3();
+        spec.hull_inset = next() != 0.0;
         for (int k = 0; k < 9; ++k) spec.inertia.data()[k] = next();
         const auto n = static_cast<std::size_t>(next());
         for (std::size_t k = 0; k < n; ++k) spec.hull.vertices.push_back(vec3());

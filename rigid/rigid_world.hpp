@@ -50,6 +50,9 @@ struct SolidSpec {
   double friction = 0.0;                // Coulomb coefficient against static ground (which has friction 1)
   double restitution = 0.0;
   std::array<bool, 6> locked{};         // x, y, z, then rotation about x, y, z held fixed
+  // true: `hull` is already the body's surface moved in by the collision margin (its maker built it so: a sphere's
+  // of radius R - margin), taken as it is; false: add_solid moves it in (inset_convex).
+  bool hull_inset = false;
 };
 
 class RigidWorld {

@@ -1,8 +1,11 @@
 // Free-surface pressure (fluid/free_surface_pressure.hpp): a surface particle continues the bulk's hydrostatic field,
-// and never goes negative.
+// and never goes negative; or carries the head of half a row.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "fluid/free_surface_pressure.hpp"
+#include "fluid/lattice.hpp"
 
 namespace slide {
 namespace {
@@ -39,6 +42,20 @@ TEST(FreeSurfacePressure, TopRowCarriesTheHeadOfHalfASpacing) {
     const double exact = s.rho * s.g * 0.5 * s.dp;
     EXPECT_NEAR(s.surface_pressure(top), exact, 1e-9 * exact) << i;
   }
+}
+
+// half_layer: the head of half a row, the same as the extrapolation gives a flat row of still water on the square
+// lattice; on the hexagonal and fcc lattices half their row spacing (0.9306 dp / 2 and 0.7937 dp / 2).
+TEST(FreeSurfacePressure, HalfLayerIsTheHeadOfHalfARow) {
+  const StillWater s(10 * StillWater::dp);
+  const double dp = StillWater::dp;
+  const double half_row = half_layer_pressure(s.rho, s.g, row_spacing(LatticeKind::square, dp));
+  EXPECT_NEAR(half_row, s.surface_pressure(19 * 20 + 7), 1e-9 * half_row);
+  EXPECT_DOUBLE_EQ(half_row, 1000.0 * 9.81 * 0.005);
+  EXPECT_NEAR(half_layer_pressure(s.rho, s.g, row_spacing(LatticeKind::hexagonal, dp)),
+              0.5 * s.rho * s.g * 0.5 * std::sqrt(3.0) * std::sqrt(2.0 / std::sqrt(3.0)) * dp, 1e-12);
+  EXPECT_NEAR(half_layer_pressure(s.rho, s.g, row_spacing(LatticeKind::fcc, dp)),
+              0.5 * s.rho * s.g * std::pow(2.0, -1.0 / 3.0) * dp, 1e-12);
 }
 
 TEST(FreeSurfacePressure, NoBulkNeighbourOrAboveTheFieldGivesZero) {

@@ -70,6 +70,54 @@ TEST(SolidBody, VolumeBelowALevelMatchesClosedForms) {
   EXPECT_NEAR(volume_below(edge, -h), w * w, 1e-14);
 }
 
+// A box cut by a plane through it, closed by its cap: the half boxes' volumes and centroids, exactly; cut by a tilted
+// plane through its centre, half the volume about the centre's mirror; wholly on the kept side, unchanged.
+TEST(SolidBody, ClippedBoxIsClosedByItsCap) {
+  const TriangleSurface box = box_surface(Vec3(1.0, 2.0, 3.0), Vec3(0.4, 0.2, 0.1));
+  const MassProperties lower = mass_properties(clip_convex(box, Vec3(1, 0, 0), 0.9));  // keeps x <= 0.9
+  EXPECT_NEAR(lower.volume, 0.1 * 0.2 * 0.1, 1e-15);
+  EXPECT_NEAR((lower.centroid - Vec3(0.85, 2.0, 3.0)).norm(), 0.0, 1e-14);
+  // Its inertia about its own centroid: a box 0.1 x 0.2 x 0.1.
+  EXPECT_NEAR(lower.inertia(0, 0), 0.002 * (0.04 + 0.01) / 12.0, 1e-17);
+  EXPECT_NEAR(lower.inertia(1, 1), 0.002 * (0.01 + 0.01) / 12.0, 1e-17);
+  const Vec3 n = Vec3(1.0, -2.0, 0.5).normalized();
+  const MassProperties half = mass_properties(clip_convex(box, n, n.dot(Vec3(1.0, 2.0, 3.0))));
+  const MassProperties other = mass_properties(clip_convex(box, -n, -n.dot(Vec3(1.0, 2.0, 3.0))));
+  EXPECT_NEAR(half.volume, 0.004, 1e-15);
+  EXPECT_NEAR(other.volume, 0.004, 1e-15);
+  EXPECT_NEAR((half.centroid + other.centroid - 2.0 * Vec3(1.0, 2.0, 3.0)).norm(), 0.0, 1e-14);
+  EXPECT_LT(n.dot(half.centroid - Vec3(1.0, 2.0, 3.0)), 0.0);
+  EXPECT_NEAR(mass_properties(clip_convex(box, Vec3(0, 0, 1), 10.0)).volume, 0.008, 1e-15);
+  EXPECT_THROW(clip_convex(box, Vec3(0, 0, 1), 0.0), std::invalid_argument);
+}
+
+// The sphere's surface holds its volume exactly; its inertia is that of a solid sphere, 2/5 V R^2 per unit density,
+// within 1.2e-3. Cut through its centre it keeps exactly a half and a quarter of it. The hemisphere's centroid lies
+// 3R/8 from the cut, and the quarter ball's 3R/8 from each cut plane (int x dV over it = pi R^4 / 16, over its
+// volume pi R^3 / 3), within 1e-3 R.
+TEST(SolidBody, SphereAndItsHalvesMatchClosedForms) {
+  const double R = 0.15, V = 4.0 / 3.0 * M_PI * R * R * R;
+  const Vec3 c(0.3, -0.2, 0.9);
+  const TriangleSurface sphere = sphere_surface(c, R);
+  const MassProperties m = mass_properties(sphere);
+  EXPECT_NEAR(m.volume, V, 1e-12 * V);  // rounding over 9,000 triangles
+  EXPECT_NEAR((m.centroid - c).norm(), 0.0, 1e-14);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.inertia(i, i), 0.4 * V * R * R, 1.2e-3 * 0.4 * V * R * R) << i;
+  EXPECT_NEAR(m.inertia(0, 1), 0.0, 1e-12 * V * R * R);
+  const MassProperties upper = mass_properties(clip_convex(sphere, Vec3(0, 0, -1), -c[2]));  // z >= c_z
+  EXPECT_NEAR(upper.volume, V / 2.0, 1e-12 * V);
+  EXPECT_NEAR((upper.centroid - (c + Vec3(0.0, 0.0, 3.0 * R / 8.0))).norm(), 0.0, 1e-3 * R);
+  const MassProperties quarter =
+      mass_properties(clip_convex(clip_convex(sphere, Vec3(-1, 0, 0), -c[0]), Vec3(0, -1, 0), -c[1]));
+  EXPECT_NEAR(quarter.volume, V / 4.0, 1e-12 * V);
+  EXPECT_NEAR((quarter.centroid - (c + Vec3(3.0 * R / 8.0, 3.0 * R / 8.0, 0.0))).norm(), 0.0, 1e-3 * R);
+  // About the vertical axis through the centre, a quarter ball has a quarter of the ball's moment.
+  const double about_axis = quarter.inertia(2, 2) + quarter.volume * (std::pow(quarter.centroid[0] - c[0], 2) +
+                                                                      std::pow(quarter.centroid[1] - c[1], 2));
+  EXPECT_NEAR(about_axis, 0.1 * V * R * R, 1.2e-3 * 0.1 * V * R * R);
+  EXPECT_THROW(sphere_surface(c, R, 7), std::invalid_argument);
+}
+
 TEST(SolidBody, FreeFlightKeepsVelocityAndSpinAboutAPrincipalAxis) {
   RigidWorld w(Vec3(0.0, 0.0, 0.0), 1e-3);
   const int b = w.add_solid(box_solid(Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.1, 0.05), 800.0));

@@ -1,6 +1,8 @@
 // 3-D scenes (dimension: 3): what they build, counted by hand, and what they refuse, naming the key.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <string>
 
 #include "cases/scene.hpp"
@@ -114,6 +116,59 @@ TEST(Scene3D, RefusesBadBodiesNamingTheKey) {
   std::string flat = with(", density: 600");
   flat.replace(flat.find("size: [0.04, 0.04, 0.02]"), 24, "size: [0.04, 0.04, 0.0]");
   EXPECT_EQ(refusal_key(flat), "bodies[0].shape.size");
+}
+
+// A sphere on the tank's corner x = y = 0, whose two sides there are planes of symmetry: the model holds a quarter of
+// it (a quarter of the stated mass, a quarter of its volume), its boundary particles all on the tank's side, and the
+// water keeps dp/2 clear of its surface.
+std::string quarter_sphere_scene(const std::string& body_fields, const std::string& method = "wall_slip: free_slip") {
+  return "dimension: 3\n"
+         "particle_spacing: 0.01\n"
+         "end_time: 0.01\n"
+         "method: {initial_state: lattice, " + method + "}\n"
+         "fluid:\n"
+         "  phases: [{name: water, density: 1000}]\n"
+         "  regions: [{type: below_level, level: 0.1}]\n"
+         "walls: [{type: tank, min: [0, 0, 0], max: [0.15, 0.15, 0.2], symmetry: [x_min, y_min]}]\n"
+         "bodies: [{name: ball, shape: {type: sphere, center: [0, 0, 0.08], radius: 0.05}" + body_fields + "}]\n";
+}
+
+TEST(Scene3D, SphereCutBySymmetryPlanesIsItsQuarter) {
+  const auto scene = build_scene<3>(load_scene_text(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz]"), {}), "s");
+  ASSERT_EQ(scene->bodies.size(), 1u);
+  const auto& rep = scene->bodies[0];
+  const double V = 4.0 / 3.0 * M_PI * 0.05 * 0.05 * 0.05;
+  EXPECT_NEAR(rep.mass, 0.05, 1e-12);
+  EXPECT_NEAR(rep.area, V / 4.0, 1e-12 * V);
+  // The quarter's centre of mass: 3R/8 from each plane, at the sphere's height.
+  EXPECT_NEAR(rep.placed[0], 3.0 * 0.05 / 8.0, 1e-3 * 0.05);
+  EXPECT_NEAR(rep.placed[2], 0.08, 1e-12);
+  EXPECT_GT(rep.particles, 100u);
+  const auto& P = scene->simulation->particles();
+  std::size_t body_particles = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double r = (P.position[i] - Vec<3>(0.0, 0.0, 0.08)).norm();
+    if (P.kind[i] == Kind::fluid) {
+      EXPECT_GE(r, 0.05 + 0.5 * 0.01 - 1e-12) << "water at " << P.position[i].transpose();
+      continue;
+    }
+    if (r > 0.05) continue;  // the tank's own particles
+    if (P.position[i][0] < 0.0 || P.position[i][1] < 0.0) continue;
+    ++body_particles;
+    EXPECT_GT(P.position[i][0], 0.0);
+    EXPECT_GT(P.position[i][1], 0.0);
+  }
+  EXPECT_GE(body_particles, rep.particles);
+}
+
+TEST(Scene3D, RefusesASymmetryPlaneThatIsNotFreeSlipOrABodyThatMayLeaveIt) {
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz]", "wall_slip: no_slip")),
+            "walls[0].symmetry");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [y, rx, ry, rz]")), "bodies[0].locked");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y]")), "bodies[0].locked");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz]").replace(
+                quarter_sphere_scene("").find("radius: 0.05"), 12, "radius: 0.0")),
+            "bodies[0].shape.radius");
 }
 
 }  // namespace

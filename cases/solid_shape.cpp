@@ -1,0 +1,164 @@
+// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box and sphere, cut by the tanks' symmetry planes.
+#include "cases/solid_shape.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cases/scene_geometry.hpp"
+#include "cases/schema.hpp"
+
+namespace slide::cases {
+namespace {
+
+// R = Rz(yaw) Ry(pitch) Rx(roll), from shape.angles = [roll, pitch, yaw] in degrees (bodies.csv's convention).
+rigid::Mat3 axes_of(const YAML::Node& shape) {
+  const Vec<3> a = vec_of<3>(shape["angles"]) * (M_PI / 180.0);
+  return rigid::Mat3(Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitX()));
+}
+
+// Boundary points of a box body in its own frame: the points (i + 1/2) h_a along each axis (h_a = its edge over
+// round(edge / dp), so the wall layer lies h_a / 2 inside each face) within `layers` grid layers of its surface. A
+// point's layer is its least layer index over the axes; behind one face (one axis at that index) its normal is that
+// face's outward normal and its depth the distance to it; in the same layer behind two or three faces (along an edge
+// or at a corner of the layer) its normal points to that edge or corner and its depth is the distance to it, so that
+// its mirror image lies in the fluid's corner, as the tanks' walls do (fluid/box_walls.hpp) and the mitred corners of
+// 2-D outlines.
+std::vector<BoundaryPointOf<3>> box_points(const Vec<3>& size, const rigid::Mat3& axes, const Vec<3>& centre,
+                                           double dp, int layers) {
+  std::array<long, 3> n{};
+  Vec<3> h;
+  for (int a = 0; a < 3; ++a) {
+    n[a] = std::max(1L, std::lround(size[a] / dp));
+    h[a] = size[a] / double(n[a]);
+  }
+  std::vector<BoundaryPointOf<3>> out;
+  for (long i = 0; i < n[0]; ++i)
+    for (long j = 0; j < n[1]; ++j)
+      for (long k = 0; k < n[2]; ++k) {
+        const Vec<3> local((i + 0.5) * h[0] - 0.5 * size[0], (j + 0.5) * h[1] - 0.5 * size[1],
+                           (k + 0.5) * h[2] - 0.5 * size[2]);
+        Vec<3> to_face;  // per axis: the distance to the nearer face, signed by its side
+        std::array<long, 3> index{};  // per axis: the grid layer, 0 next to the face
+        for (int a = 0; a < 3; ++a) {
+          const long cell = a == 0 ? i : a == 1 ? j : k;
+          to_face[a] = std::copysign(0.5 * size[a] - std::abs(local[a]), local[a]);
+          index[a] = std::min(cell, n[a] - 1 - cell);
+        }
+        const long layer = std::min({index[0], index[1], index[2]});
+        if (layer >= layers) continue;
+        Vec<3> out_dir = Vec<3>::Zero();
+        for (int a = 0; a < 3; ++a)
+          if (index[a] == layer) out_dir[a] = to_face[a];
+        out.push_back({centre + axes * local, Vec<3>(axes * out_dir.normalized()), out_dir.norm(), int(layer)});
+      }
+  return out;
+}
+
+// Boundary points of a sphere: layer l on the sphere of radius R - (l + 1/2) dp, as N_l = round(4 pi r_l^2 / dp^2)
+// points of a Fibonacci lattice (point k at height 1 - (2k + 1) / N, turned by the golden angle pi (3 - sqrt 5) from
+// the one before: nearly even spacing, one point per dp^2 of its sphere, as a flat wall has), normal radial, depth
+// (l + 1/2) dp.
+std::vector<BoundaryPointOf<3>> sphere_points(const Vec<3>& centre, double radius, double dp, int layers) {
+  std::vector<BoundaryPointOf<3>> out;
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int l = 0; l < layers; ++l) {
+    const double depth = (l + 0.5) * dp, r = radius - depth;
+    if (r <= 0.0) break;
+    const long count = std::max(1L, std::lround(4.0 * M_PI * r * r / (dp * dp)));
+    for (long k = 0; k < count; ++k) {
+      const double z = 1.0 - (2.0 * k + 1.0) / double(count), ring = std::sqrt(std::max(0.0, 1.0 - z * z));
+      const Vec<3> normal(ring * std::cos(golden * k), ring * std::sin(golden * k), z);
+      out.push_back({centre + r * normal, normal, depth, l});
+    }
+  }
+  return out;
+}
+
+double box_signed_distance(const Vec<3>& p, const Vec<3>& centre, const Vec<3>& size, const rigid::Mat3& axes) {
+  const Vec<3> q = (axes.transpose() * (p - centre)).cwiseAbs() - 0.5 * size;
+  return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
+}
+
+}  // namespace
+
+std::vector<SymmetryPlane> symmetry_planes(const YAML::Node& resolved) {
+  std::vector<SymmetryPlane> planes;
+  const YAML::Node walls = resolved["walls"];
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const YAML::Node faces = walls[w]["symmetry"];
+    if (!faces) continue;
+    const Vec<3> lo = vec_of<3>(walls[w]["min"]), hi = vec_of<3>(walls[w]["max"]);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const std::string face = faces[f].as<std::string>();
+      const int axis = face[0] == 'x' ? 0 : 1;
+      const bool low = face.substr(2) == "min";
+      SymmetryPlane s;
+      s.normal = Vec<3>::Zero();
+      s.normal[axis] = low ? -1.0 : 1.0;
+      s.offset = low ? -lo[axis] : hi[axis];
+      s.key = fmt::format("walls[{}].symmetry[{}]", w, f);
+      planes.push_back(s);
+    }
+  }
+  return planes;
+}
+
+bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < whole_volume * (1.0 - 1e-12); }
+
+SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
+                       double dp, int layers) {
+  SolidShape s;
+  const std::string type = shape["type"].as<std::string>();
+  const Vec<3> centre = vec_of<3>(shape["center"]);
+  if (type == "sphere") {
+    const double radius = shape["radius"].as<double>();
+    if (!(radius > 0.0)) throw SceneError(path + ".shape.radius", "must be positive");
+    s.surface = rigid::sphere_surface(centre, radius);
+    s.signed_distance = [centre, radius](const Vec<3>& p) { return (p - centre).norm() - radius; };
+    s.points = sphere_points(centre, radius, dp, layers);
+    s.inset = [centre, radius, path](double margin) {
+      if (!(radius > 1.5 * margin)) throw SceneError(path + ".shape.radius", "too small for the collision margin");
+      return rigid::sphere_surface(centre, radius - margin);
+    };
+  } else {
+    const Vec<3> size = vec_of<3>(shape["size"]);
+    if (!(size.minCoeff() > 0.0)) throw SceneError(path + ".shape.size", "every edge length must be positive");
+    s.axes = axes_of(shape);
+    s.surface = rigid::box_surface(centre, size, s.axes);
+    s.signed_distance = [centre, size, axes = s.axes](const Vec<3>& p) {
+      return box_signed_distance(p, centre, size, axes);
+    };
+    s.points = box_points(size, s.axes, centre, dp, layers);
+    s.inset = [centre, size, axes = s.axes, path](double margin) {
+      if (!(size.minCoeff() > 3.0 * margin)) throw SceneError(path + ".shape.size", "too small for the collision margin");
+      return rigid::box_surface(centre, size - Vec<3>::Constant(2.0 * margin), axes);
+    };
+  }
+  s.whole_volume = rigid::mass_properties(s.surface).volume;
+  for (const auto& plane : planes) {
+    try {
+      s.surface = rigid::clip_convex(s.surface, plane.normal, plane.offset);
+    } catch (const std::invalid_argument&) {
+      throw SceneError(path + ".shape", fmt::format("lies wholly beyond the symmetry plane {}", plane.key));
+    }
+    std::erase_if(s.points, [&](const BoundaryPointOf<3>& p) { return !plane.keeps(p.position); });
+  }
+  s.inset = [whole = s.inset, planes, path](double margin) {
+    rigid::TriangleSurface hull = whole(margin);
+    for (const auto& plane : planes) {
+      try {
+        hull = rigid::clip_convex(hull, plane.normal, plane.offset - margin);
+      } catch (const std::invalid_argument&) {
+        throw SceneError(path + ".shape", fmt::format("too thin beside the symmetry plane {} for the collision margin",
+                                                      plane.key));
+      }
+    }
+    return hull;
+  };
+  return s;
+}
+
+}  // namespace slide::cases

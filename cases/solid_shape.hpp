@@ -1,0 +1,47 @@
+#pragma once
+// A 3-D body's shape (bodies[].shape, dimension: 3): its closed surface, its signed distance and its boundary points,
+// cut by the scene's symmetry planes. To add a shape: its variant in body_schema_3d (cases/scene_schema.cpp) and its
+// case in solid_shape (solid_shape.cpp): a closed outward surface (mass properties, Bullet's hull, the draft), a signed
+// distance (where water may stand) and boundary points in layers with normals (the particles that carry it).
+#include <yaml-cpp/yaml.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fluid/vec.hpp"
+#include "fluid/walls.hpp"
+#include "rigid/polyhedron.hpp"
+
+namespace slide::cases {
+
+// A tank face that is a plane of symmetry (walls[].symmetry): the scene models the side n . x <= offset of it, n the
+// face's outward normal (out of the water). A body it cuts is modelled by its part on that side.
+struct SymmetryPlane {
+  Vec<3> normal;
+  double offset = 0.0;
+  std::string key;  // walls[w].symmetry, for messages
+  bool keeps(const Vec<3>& p) const { return normal.dot(p) < offset; }
+};
+
+// The symmetry planes of the scene's tanks, from the resolved scene.
+std::vector<SymmetryPlane> symmetry_planes(const YAML::Node& resolved);
+
+struct SolidShape {
+  rigid::TriangleSurface surface;        // closed, outward, world frame at placement, cut by the symmetry planes
+  double whole_volume = 0.0;             // m^3, before the cut: a body's mass key states the whole body's
+  rigid::Mat3 axes = rigid::Mat3::Identity();  // the body frame's axes at placement
+  std::function<double(const Vec<3>&)> signed_distance;  // m from the whole shape's surface, < 0 inside
+  std::vector<BoundaryPointOf<3>> points;  // wall layer and dummies within the kept side (empty when layers is 0)
+  // The same shape, cut the same way, moved in by `margin` (m) all round: the hull Bullet collides with, adding its
+  // margin back (rigid::SolidSpec::hull_inset). Throws SceneError where nothing is left.
+  std::function<rigid::TriangleSurface(double margin)> inset;
+  bool cut() const;                        // whether a symmetry plane cuts it
+};
+
+// The shape of bodies[k] (`shape` its shape node, `path` its key path), its boundary points in `layers` layers at the
+// spacing dp. Throws SceneError naming the key for a degenerate shape.
+SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
+                       double dp, int layers);
+
+}  // namespace slide::cases
