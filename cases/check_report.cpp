@@ -149,8 +149,9 @@ std::string bodies(const Scene<3>& scene) {
 }  // namespace
 
 
-// A phase's wall condition (fluid/basal_friction.hpp).
-static std::string basal_condition(double mu_b) {
+// A phase's wall condition (fluid/basal_friction.hpp; free_slip leaves walls out of the viscous term whatever it says).
+static std::string basal_condition(double mu_b, WallSlip slip) {
+  if (slip == WallSlip::free_slip) return "free-slip at walls";
   if (!std::isfinite(mu_b)) return "no-slip at walls";
   return fmt::format("basal friction {:.4g} deg (mu_b {:.4g}) at walls", std::atan(mu_b) * 180.0 / M_PI, mu_b);
 }
@@ -163,7 +164,7 @@ std::string phases_and_slides(const Scene<D>& scene) {
   std::string out;
   for (const auto& p : sim.phases)
     out += fmt::format("phase {:<9} {} kg/m^3, {}, {}\n", p.name, p.density_kg_m3, model_name(p.rheology),
-                       basal_condition(p.basal_friction));
+                       basal_condition(p.basal_friction, sim.options.wall_slip));
   out += fmt::format("viscous scheme  {}\n", to_string(sim.options.viscous_scheme));
   for (const auto& s : scene.slides)
     out += fmt::format("slide {:<9} deformable ({}), {} particles, area {:.6g} m^2, mass {:.6g} kg/m (particles {:.6g})\n"
