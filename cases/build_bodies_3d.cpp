@@ -179,19 +179,19 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
       throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
                                                   "otherwise)");
     const rigid::Mat3& axes = shape.axes;
+    const double volume = rigid::mass_properties(surface).volume, density = spec.mass / volume;
     int body = 0;
     try {
-      body = b.bodies->add(name, collision, motion, spec.mass / rigid::mass_properties(surface).volume,
+      body = b.bodies->add(name, collision, motion, density,
                            rigid::Quat(Eigen::Quaterniond(Eigen::Matrix3d(axes))));
     } catch (const std::invalid_argument& e) {
       throw SceneError(path + ".shape", e.what());
     }
     const Vec<3> c = spec.centre_of_mass;
-    const double density = spec.mass / rigid::mass_properties(surface).volume;
     BodyReportOf<3> rep;
     rep.name = name;
     rep.motion = "free";
-    rep.area = rigid::mass_properties(surface).volume;
+    rep.area = volume;
     rep.mass = spec.mass;
     rep.inertia = spec.inertia.trace() / 3.0;
     rep.placed = c;
