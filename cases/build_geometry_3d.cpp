@@ -60,15 +60,16 @@ void build_walls(SceneBuild<3>& b) {
     const auto wn = b.r["walls"][w];
     const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
     if (b.sim->options.lattice == LatticeKind::square) check_on_the_cubic_lattice(lo, hi, b.dp, w);
-    // A plane of symmetry holds no shear: the walls are all of method.wall_slip's kind so far.
-    if (wn["symmetry"].size() > 0 && b.sim->options.wall_slip != WallSlip::free_slip)
-      throw SceneError(fmt::format("walls[{}].symmetry", w), "a side of symmetry is free-slip: set method.wall_slip: "
-                                                             "free_slip (every wall takes it; one slip per wall is not "
-                                                             "offered yet)");
+    // Sides of symmetry have no particles: the mirror images of what stands near them take their place.
+    unsigned mirror_sides = 0;
+    for (std::size_t f = 0; f < wn["symmetry"].size(); ++f) {
+      const std::string side = wn["symmetry"][f].as<std::string>();
+      mirror_sides |= tank_side_bit(side[0] == 'x' ? 0 : 1, side.substr(2) == "max");
+    }
     std::vector<BoundaryPointOf<3>> pts;
     try {
       const FluidOptions<3>& opt = b.sim->options;
-      pts = tank_boundary(opt.lattice, lo, hi, b.dp, tank_layers(b, wn), opt.re_over_dp * b.dp);
+      pts = tank_boundary(opt.lattice, lo, hi, b.dp, tank_layers(b, wn), opt.re_over_dp * b.dp, mirror_sides);
     } catch (const std::invalid_argument& e) {
       throw SceneError(fmt::format("walls[{}].max", w), e.what());
     }

@@ -3,11 +3,13 @@
 // domain, and the settled start (damped settling before t = 0, coupling/relaxation.hpp).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "cases/scene_build.hpp"
+#include "cases/solid_shape.hpp"
 #include "coupling/position_text.hpp"
 #include "fluid/periodic.hpp"
 #include "coupling/equilibrium_column.hpp"
@@ -113,6 +115,16 @@ void set_domain(SceneBuild<D>& b) {
         if (P.position[i][k] < opt.domain_lo[k] || P.position[i][k] > opt.domain_hi[k])
           throw SceneError("domain", fmt::format("particle at {} lies outside the domain", position_text<D>(P.position[i])));
     opt.periodic_x = b.period_x;
+  }
+  if constexpr (D == 3) {
+    opt.mirrors.clear();
+    for (const SymmetryPlane& s : symmetry_planes(r)) {  // each plane once, however many tanks name it
+      const MirrorPlane m = s.mirror();
+      const bool named = std::any_of(opt.mirrors.begin(), opt.mirrors.end(), [&](const MirrorPlane& o) {
+        return o.axis == m.axis && o.at == m.at && o.keeps_above == m.keeps_above;
+      });
+      if (!named) opt.mirrors.push_back(m);
+    }
   }
   if constexpr (D == 2) {
     std::vector<WallFace> faces;

@@ -359,9 +359,10 @@ Schema wall_schema_3d() {
                         {"layers", S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover "
                                               "the kernel", 0L, 0L, 10L)},
                         {"symmetry", S::list("sides that are planes of symmetry: the scene is the half (or quarter) of a "
-                                             "symmetric one on this side of them. They are walls, free-slip (needs "
-                                             "method.wall_slip: free_slip), and no wall for bodies: a body they cut is "
-                                             "its part on this side, and moves along them without turning",
+                                             "symmetric one on this side of them. They hold no particles: what stands "
+                                             "within the kernel's reach of them gets its mirror image beyond "
+                                             "(fluid/ghosts.hpp), which makes them free-slip; a body they cut is its "
+                                             "part on this side, and moves along them without turning",
                                              S::choice("side", {"x_min", "x_max", "y_min", "y_max"}, std::nullopt))}})}});
 }
 

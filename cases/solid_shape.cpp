@@ -106,6 +106,14 @@ std::vector<SymmetryPlane> symmetry_planes(const YAML::Node& resolved) {
   return planes;
 }
 
+MirrorPlane SymmetryPlane::mirror() const {
+  MirrorPlane m;
+  m.axis = std::abs(normal[0]) > 0.5 ? 0 : std::abs(normal[1]) > 0.5 ? 1 : 2;
+  m.keeps_above = normal[m.axis] < 0.0;  // the outward normal of a min face points down the axis
+  m.at = offset * normal[m.axis];
+  return m;
+}
+
 bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < whole_volume * (1.0 - 1e-12); }
 
 SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fluid/mirror_plane.hpp"
 #include "fluid/vec.hpp"
 #include "fluid/walls.hpp"
 #include "rigid/polyhedron.hpp"
@@ -22,6 +23,8 @@ struct SymmetryPlane {
   double offset = 0.0;
   std::string key;  // walls[w].symmetry, for messages
   bool keeps(const Vec<3>& p) const { return normal.dot(p) < offset; }
+  // The plane as the solver's ghosts know it (fluid/mirror_plane.hpp).
+  MirrorPlane mirror() const;
 };
 
 // The symmetry planes of the scene's tanks, from the resolved scene.

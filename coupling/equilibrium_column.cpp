@@ -8,7 +8,7 @@
 
 #include "coupling/advance.hpp"
 #include "fluid/hydrostatic_start.hpp"
-#include "fluid/periodic.hpp"
+#include "fluid/ghosts.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide {

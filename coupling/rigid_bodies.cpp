@@ -110,7 +110,8 @@ void RigidBodies<D>::place_particles(Particles<D>& P, double time) {
   }
   placed_state_ = s;
   placed_time_ = time;
-  parallel_for(P.size(), [&](std::size_t i) {
+  // The owned particles; their ghosts take their images from the domain (Simulation::move_bodies).
+  parallel_for(P.real_count(), [&](std::size_t i) {
     const int f = P.body_frame[i];
     if (f < 0) return;
     const auto& rf = field[static_cast<std::size_t>(P.body_frames.body[f])];

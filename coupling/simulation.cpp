@@ -46,6 +46,33 @@ void Simulation<D>::check_periodic_setup() const {
   }
 }
 
+// Planes of symmetry (options.mirrors): every boundary particle on their modelled side, two planes on one axis far enough
+// apart that a particle is near one of them at most, none along a periodic x, and no implicit viscous solve (its
+// matrix would take a mirror image's velocity as its source's, without the sign of the normal component).
+template <int D>
+void Simulation<D>::check_mirror_setup() const {
+  const auto& M = options.mirrors;
+  if (M.empty()) return;
+  if (options.viscous_scheme == ViscousScheme::implicit)
+    throw std::invalid_argument("planes of symmetry cannot be combined with the implicit viscosity yet: its matrix "
+                                "does not mirror the velocity of a particle's image");
+  for (std::size_t k = 0; k < M.size(); ++k) {
+    if (M[k].axis < 0 || M[k].axis >= D) throw std::invalid_argument("a plane of symmetry's axis is not one of the scene's");
+    if (options.periodic_x && M[k].axis == 0)
+      throw std::invalid_argument("a plane of symmetry across x cannot be combined with periodic_x");
+    for (std::size_t l = 0; l < k; ++l)
+      if (M[l].axis == M[k].axis && !(std::abs(M[l].at - M[k].at) >= 2.0 * list_radius()))
+        throw std::invalid_argument("two planes of symmetry across " + std::string(1, "xyz"[M[k].axis]) +
+                                    " stand closer than twice the kernel radius plus the neighbour skin (" +
+                                    std::to_string(2.0 * list_radius()) + " m)");
+    const auto& P = domain_.particles;
+    for (std::size_t i = 0; i < P.real_count(); ++i)  // fluid that crossed comes back at the next rebuild
+      if (P.kind[i] != Kind::fluid && M[k].inside(P.position[i][M[k].axis]) < 0.0)
+        throw std::invalid_argument("boundary particle " + std::to_string(P.id[i]) + " lies beyond a plane of symmetry (" +
+                                    std::string(1, "xyz"[M[k].axis]) + " = " + std::to_string(M[k].at) + ")");
+  }
+}
+
 template <int D>
 void Simulation<D>::initialise() {
   const double dp = options.dp;
@@ -61,12 +88,17 @@ void Simulation<D>::initialise() {
                 std::holds_alternative<Newtonian>(phases[0].rheology) && options.gravity.norm() > 0.0;
   eos = EquationOfState(lattice.n0, options.sound_speed, options.gamma);
   Vec<D> grid_lo = options.domain_lo, grid_hi = options.domain_hi;
-  domain_.set_period(options.periodic_x);
+  domain_.set_ghost_layout({options.periodic_x, options.mirrors});
   if (options.periodic_x) {
     check_periodic_setup();
     // The grid also covers the ghost layers beyond the period's ends.
     grid_lo[0] = std::min(grid_lo[0], options.periodic_x->x_min - list_radius());
     grid_hi[0] = std::max(grid_hi[0], options.periodic_x->x_max + list_radius());
+  }
+  check_mirror_setup();
+  for (const MirrorPlane& m : options.mirrors) {  // and the mirror images' layers beyond the planes
+    grid_lo[m.axis] = std::min(grid_lo[m.axis], m.at - list_radius());
+    grid_hi[m.axis] = std::max(grid_hi[m.axis], m.at + list_radius());
   }
   grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
@@ -109,7 +141,7 @@ void Simulation<D>::update_neighbors(bool force) {
   }
   // Drop the ghosts and bring the real particles back into the period before sorting them.
   domain_.drop_ghosts();
-  domain_.wrap_into_period();
+  domain_.bring_inside();
   // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again.
   grid_.bin(x);
   domain_.particles.reorder(grid_.sorted_indices(), scratch_);  // scratch_ is free between steps
@@ -568,6 +600,7 @@ void Simulation<D>::move_bodies(double dt) {
   if (!bodies_) return;
   bodies_->advance(time_ + dt, dt);
   bodies_->place_particles(domain_.particles, time_ + dt);
+  domain_.refresh({HaloField::motion, HaloField::wall_normal});  // the ghosts of body particles
 }
 
 // Problem code of real particle i, most severe highest: 4 non-finite, 2 collapse, 1 speed, 0 none. Leaving the
@@ -640,7 +673,8 @@ void Simulation<D>::save_state(StateWriter& out) const {
   out.put(domain_.particles.body_frames.offset);
   out.put(domain_.particles.body_frames.normal);
   out.put(domain_.particles.ghost_source);
-  out.put(domain_.particles.ghost_shift);
+  out.put(domain_.particles.ghost_flip);
+  out.put(domain_.particles.ghost_offset);
   out.put<std::uint64_t>(domain_.particles.removed_count);
   out.put(time_);
   out.put(step_count_);
@@ -679,7 +713,8 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(domain_.particles.body_frames.normal);
   pair_weights_.forget();
   in.get(domain_.particles.ghost_source);
-  in.get(domain_.particles.ghost_shift);
+  in.get(domain_.particles.ghost_flip);
+  in.get(domain_.particles.ghost_offset);
   domain_.particles.removed_count = in.get<std::uint64_t>();
   if (domain_.particles.real_count() + domain_.particles.removed_count != made)
     throw std::runtime_error("the checkpoint's particles are not the scene's");

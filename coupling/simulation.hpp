@@ -170,6 +170,7 @@ class Simulation {
   double particle_volume() const { return std::pow(options.dp, D); }  // per unit width in 2-D
   double list_radius() const { return re() + options.skin_over_dp * options.dp; }
   void check_periodic_setup() const;
+  void check_mirror_setup() const;
 
   Domain<D> domain_;
   std::shared_ptr<RigidBodies<D>> bodies_;

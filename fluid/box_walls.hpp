@@ -10,6 +10,9 @@
 // face's normal and distance; along an edge or at a corner, the direction to the edge or corner, so that its mirror
 // image (x + 2 depth normal) lies in the fluid's corner, as polyline_boundary's mitred corners do in 2-D. A point on a
 // face (fcc) has that face's normal (the sum of its faces', normalised, on an edge) and depth 0.
+// A side in `mirror_sides` (bit 2 a: the min face across axis a, bit 2 a + 1: the max face; a < 2) is a plane of
+// symmetry: it has no particles (the water's and the other walls' mirror images stand there, fluid/ghosts.hpp), and
+// the inside runs on through it, so that the floor and the other sides meet it with the normals of faces, not edges.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -25,8 +28,11 @@ inline bool inside_tank(const Vec<3>& p, const Vec<3>& lo, const Vec<3>& hi, dou
   return p[0] > lo[0] + eps && p[0] < hi[0] - eps && p[1] > lo[1] + eps && p[1] < hi[1] - eps && p[2] > lo[2] + eps;
 }
 
+// The bit of tank_boundary's mirror_sides for the min (max) face across axis a.
+inline unsigned tank_side_bit(int axis, bool max_face) { return 1u << (2 * axis + (max_face ? 1 : 0)); }
+
 inline std::vector<BoundaryPointOf<3>> tank_boundary(LatticeKind kind, const Vec<3>& lo, const Vec<3>& hi, double dp,
-                                                     int layers, double depth) {
+                                                     int layers, double depth, unsigned mirror_sides = 0) {
   for (int a = 0; a < 3; ++a)
     if (!(hi[a] > lo[a])) throw std::invalid_argument("a tank's max must exceed its min along every axis");
   if (kind == LatticeKind::square && layers < 1) throw std::invalid_argument("a tank needs at least one boundary layer");
@@ -34,12 +40,17 @@ inline std::vector<BoundaryPointOf<3>> tank_boundary(LatticeKind kind, const Vec
   const double spacing = row_spacing(kind, dp), thickness = square ? layers * dp : depth, eps = 1e-9 * dp;
   Vec<3> box_lo = lo - Vec<3>::Constant(thickness), box_hi = hi + Vec<3>::Constant(thickness);
   box_hi[2] = hi[2];  // the sides end at the tank's top
+  const auto mirror = [&](int a, bool max_face) { return (mirror_sides & tank_side_bit(a, max_face)) != 0; };
   std::vector<BoundaryPointOf<3>> out;
   for_each_lattice_point(kind, dp, box_lo, box_hi, [&](const Vec<3>& p) {
     if (p[2] > hi[2] + eps || p[2] < box_lo[2] - eps || inside_tank(p, lo, hi, eps)) return;
-    Vec<3> nearest = p;  // the nearest point of the inside, open above
-    for (int a = 0; a < 3; ++a) nearest[a] = std::max(nearest[a], lo[a]);
-    for (int a = 0; a < 2; ++a) nearest[a] = std::min(nearest[a], hi[a]);
+    for (int a = 0; a < 2; ++a)  // on or beyond a plane of symmetry: its mirror images' place
+      if ((mirror(a, false) && p[a] <= lo[a] + eps) || (mirror(a, true) && p[a] >= hi[a] - eps)) return;
+    Vec<3> nearest = p;  // the nearest point of the inside, open above and through the planes of symmetry
+    for (int a = 0; a < 3; ++a)
+      if (a == 2 || !mirror(a, false)) nearest[a] = std::max(nearest[a], lo[a]);
+    for (int a = 0; a < 2; ++a)
+      if (!mirror(a, true)) nearest[a] = std::min(nearest[a], hi[a]);
     const Vec<3> to_inside = nearest - p;
     const double outside = to_inside.cwiseAbs().maxCoeff();  // along one axis: the layer's distance
     if (outside > thickness + eps || (square && outside < eps)) return;

@@ -4,8 +4,8 @@
 // (owned_count()), then refreshes the fields the next stage reads of its neighbours; the time-step limits, the checks
 // and the largest speed reduce over the owned particles here.
 //
-// Today the ghosts are the periodic images (fluid/periodic.hpp: behind the owned particles in every array, rebuilt
-// with the neighbour list, refreshed between). Particles owned by another process will be a second kind of ghost
+// Today the ghosts are the periodic images and the mirror images across planes of symmetry (fluid/ghosts.hpp: behind
+// the owned particles in every array, rebuilt with the neighbour list, refreshed between). Particles owned by another process will be a second kind of ghost
 // behind the same calls: refresh() becomes a halo exchange, the reductions combine across processes, and the stages
 // do not change. Maxima are exact in any order; sums over particles are to be taken in an order that does not depend
 // on the split (global ids), so that results stay the same to the bit for any number of threads and processes.
@@ -17,13 +17,24 @@
 
 #include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
-#include "fluid/periodic.hpp"
+#include "fluid/ghosts.hpp"
 
 namespace slide {
 
 // What a stage's neighbours read beyond the motion: each is one per-particle array carried to the ghosts. `motion` is
-// position (shifted by the ghost's offset), velocity and acceleration, which every stage that moves particles changes.
-enum class HaloField { motion, velocity, number_density, pressure, gradient_correction, viscosity, wall_fraction, wall_fill };
+// position (the ghost's image of it), velocity and acceleration, which every stage that moves particles changes;
+// `wall_normal` turns with a body.
+enum class HaloField {
+  motion,
+  velocity,
+  number_density,
+  pressure,
+  gradient_correction,
+  viscosity,
+  wall_fraction,
+  wall_fill,
+  wall_normal
+};
 
 template <int D>
 class Domain {
@@ -31,24 +42,27 @@ class Domain {
   // The owned particles, then their ghosts (Particles::real_count() are owned).
   Particles<D> particles;
 
-  // The period along x, if any (fluid/periodic.hpp); set before the first rebuild of the ghosts.
-  void set_period(const std::optional<PeriodicX>& period) { period_ = period; }
-  const std::optional<PeriodicX>& period() const { return period_; }
+  // The period along x, if any (fluid/periodic.hpp), and the planes of symmetry (fluid/mirror_plane.hpp); set before
+  // the first rebuild of the ghosts.
+  void set_ghost_layout(const GhostLayout& layout) { layout_ = layout; }
+  const GhostLayout& ghost_layout() const { return layout_; }
 
   std::size_t owned_count() const { return particles.real_count(); }
 
   // Before the owned particles are re-sorted or removed: the ghosts go (every array back to the owned particles).
   void drop_ghosts() {
-    if (period_) remove_ghosts(particles);
+    if (layout_.any()) remove_ghosts(particles);
   }
-  // Owned particles that crossed an end of the period come back into it (no ghosts present).
-  void wrap_into_period() {
-    if (period_) wrap_positions(particles, *period_);
+  // Owned particles that crossed an end of the period come back into it, those that crossed a plane of symmetry come
+  // back as their image (no ghosts present).
+  void bring_inside() {
+    if (layout_.period) wrap_positions(particles, *layout_.period);
+    reflect_into_mirrors(particles, layout_.mirrors);
   }
-  // After a re-sort: ghosts afresh for the owned particles within `depth` (the neighbour list's radius) of the domain's
-  // edges. Returns whether there are any.
+  // After a re-sort: ghosts afresh for the owned particles within `depth` (the neighbour list's radius) of the
+  // period's ends and the planes of symmetry. Returns whether there are any.
   bool make_ghosts(double depth) {
-    if (period_) add_ghosts(particles, *period_, depth);
+    if (layout_.any()) add_ghosts(particles, layout_, depth);
     return particles.ghost_count() != 0;
   }
 
@@ -92,10 +106,11 @@ class Domain {
       case HaloField::viscosity: copy_to_ghosts(P, P.viscosity); return;
       case HaloField::wall_fraction: copy_to_ghosts(P, P.wall_fraction); return;
       case HaloField::wall_fill: copy_to_ghosts(P, P.wall_fill); return;
+      case HaloField::wall_normal: copy_to_ghosts(P, P.wall_normal); return;
     }
   }
 
-  std::optional<PeriodicX> period_;
+  GhostLayout layout_;
 };
 
 }  // namespace slide

@@ -68,13 +68,15 @@ struct Particles {
     body_frames.normal.push_back(normal);
   }
 
-  // Periodic ghosts (fluid/periodic.hpp). The arrays above hold the real particles first, then ghost_source.size()
-  // ghosts: ghost g, at index real_count() + g, is an image of real particle ghost_source[g], equal to it in every
-  // array except that its position is shifted by ghost_shift[g] along x and its id is id_end() + g (real ids
-  // are creation indices below id_end(), so they never collide). Removing the ghosts truncates the arrays.
-  // Without periodic boundaries there are none and real_count() == size().
+  // Ghosts (fluid/ghosts.hpp: periodic and mirror images). The arrays above hold the real particles first, then
+  // ghost_source.size() ghosts: ghost g, at index real_count() + g, is an image of real particle ghost_source[g],
+  // equal to it in every array except that its position is the source's with the components along the axes in the
+  // bits of ghost_flip[g] negated, plus ghost_offset[g], its vectors are negated along those axes too, and its id is
+  // id_end() + g (real ids are creation indices below id_end(), so they never collide). Removing the ghosts truncates
+  // the arrays. Without periodic ends or planes of symmetry there are none and real_count() == size().
   std::vector<std::uint32_t> ghost_source;
-  std::vector<double> ghost_shift;
+  std::vector<std::uint8_t> ghost_flip;
+  std::vector<Vec<D>> ghost_offset;
   // Particles taken out of a run (remove_keeping_ids: they left the domain) since the ids were last made dense. The
   // real ids lie in 0 .. real_count() + removed_count - 1, so ghosts take ids from there on.
   std::size_t removed_count = 0;
@@ -111,7 +113,7 @@ struct Particles {
   }
 
   std::size_t add(const Vec<D>& x, Kind k, std::uint8_t phase_index, double rho, double mu) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::add with periodic ghosts present");
+    if (!ghost_source.empty()) throw std::logic_error("Particles::add with ghosts present");
     const std::size_t i = size();
     position.push_back(x);
     velocity.push_back(Vec<D>::Zero());
@@ -136,7 +138,7 @@ struct Particles {
   // allocates nothing: a new array per quantity at every re-sort had left the heap fragmented, 40 bytes a particle
   // of resident size in the bench case's first 0.05 s (measured against a fixed mmap threshold).
   void reorder(const std::vector<std::uint32_t>& order, std::vector<Vec<D>>& buffer) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::reorder with periodic ghosts present");
+    if (!ghost_source.empty()) throw std::logic_error("Particles::reorder with ghosts present");
     if (buffer.size() < size()) buffer.resize(size());
     for_each_array([&](auto& v) { permute_through(v, order, buffer); });
   }
@@ -145,7 +147,7 @@ struct Particles {
   // others in their order and their ids (a particle's id names it in every snapshot of a run).
   template <class Drop>
   void remove_keeping_ids(Drop drop) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_keeping_ids with periodic ghosts present");
+    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_keeping_ids with ghosts present");
     std::vector<std::uint32_t> keep;
     for (std::size_t i = 0; i < size(); ++i)
       if (!drop(i)) keep.push_back(static_cast<std::uint32_t>(i));
@@ -160,7 +162,7 @@ struct Particles {
   // others in their order, and renumbers the ids 0 .. size() - 1 in their former order, so ids stay creation ranks.
   template <class Drop>
   void remove_if(Drop drop) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_if with periodic ghosts present");
+    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_if with ghosts present");
     std::vector<std::uint32_t> keep;
     for (std::size_t i = 0; i < size(); ++i)
       if (!drop(i)) keep.push_back(static_cast<std::uint32_t>(i));

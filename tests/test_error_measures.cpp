@@ -9,6 +9,7 @@
 #include "cases/csv_table.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tools/measures/dam_break_front.hpp"
+#include "tools/measures/extrema.hpp"
 #include "tools/measures/floating_draft.hpp"
 #include "tools/measures/poiseuille_profile.hpp"
 #include "tools/measures/series.hpp"
@@ -170,6 +171,30 @@ TEST(PoiseuilleProfile, ReadsTheChannelAndRheologyFromTheRunsScene) {
   EXPECT_LT(e.rms, 1e-8);
   write_file(dir / "run.json", with(R"({"model": "mohr_coulomb", "cohesion": 0, "friction_angle": 30})"));
   EXPECT_THROW(tools::poiseuille_profile_error(dir), std::runtime_error);
+}
+
+// Turning points: exact on a series made of parabolas; O(h^2) on a sampled cosine; none where the series does not turn.
+TEST(TurningPoints, ParabolasExactlyACosineToItsSamplingError) {
+  const std::vector<double> x{0.0, 0.1, 0.25, 0.45, 0.55, 0.6, 0.8};
+  std::vector<double> y;
+  for (const double t : x) y.push_back(t < 0.5 ? 2.0 - (t - 0.3) * (t - 0.3) : 1.0 + 3.0 * (t - 0.65) * (t - 0.65));
+  const auto p = tools::turning_points(x, y);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_NEAR(p[0].x, 0.3, 1e-14);
+  EXPECT_NEAR(p[0].y, 2.0, 1e-14);
+  EXPECT_NEAR(p[1].x, 0.65, 1e-14);
+  EXPECT_NEAR(p[1].y, 1.0, 1e-14);
+  std::vector<double> t, c;
+  for (int k = 0; k <= 180; ++k) t.push_back(0.01 * k), c.push_back(std::exp(-0.2 * t.back()) * std::cos(2 * M_PI * t.back()));
+  const auto q = tools::turning_points(t, c, 0.2);
+  ASSERT_EQ(q.size(), 3u);  // the trough near 0.5, the crest near 1, the trough near 1.5
+  for (int k = 0; k < 3; ++k) {
+    // The vertex of e^{-0.2 t} cos(2 pi t): tan(2 pi t) = -0.2 / (2 pi).
+    const double exact = 0.5 * (k + 1) - std::atan(0.2 / (2 * M_PI)) / (2 * M_PI);
+    EXPECT_NEAR(q[k].x, exact, 2e-4);
+    EXPECT_NEAR(q[k].y, std::exp(-0.2 * exact) * std::cos(2 * M_PI * exact), 1e-4);
+  }
+  EXPECT_TRUE(tools::turning_points(x, std::vector<double>(x.size(), 1.0)).empty());
 }
 
 }  // namespace

@@ -16,7 +16,7 @@
 #include "coupling/simulation.hpp"
 #include "fluid/laplacian.hpp"
 #include "fluid/parallel.hpp"
-#include "fluid/periodic.hpp"
+#include "fluid/ghosts.hpp"
 #include "fluid/walls.hpp"
 #include "tools/run_outputs.hpp"
 
@@ -246,13 +246,17 @@ TEST(Periodic, GhostsAreTheExpectedImages) {
   const Particles<2> before = P;
   add_ghosts(P, period, margin);
   EXPECT_EQ(P.ghost_source, expected_source);
-  EXPECT_EQ(P.ghost_shift, expected_shift);
+  ASSERT_EQ(P.ghost_offset.size(), expected_shift.size());
+  for (std::size_t g = 0; g < P.ghost_count(); ++g) {
+    EXPECT_EQ(P.ghost_offset[g], Vec<2>(expected_shift[g], 0.0));
+    EXPECT_EQ(P.ghost_flip[g], 0u);
+  }
   ASSERT_EQ(P.real_count(), real);
   ASSERT_EQ(P.size(), real + expected_source.size());
   EXPECT_GT(P.ghost_count(), 40u);
   for (std::size_t g = 0; g < P.ghost_count(); ++g) {
     const std::size_t t = real + g, s = P.ghost_source[g];
-    EXPECT_EQ(P.position[t][0], P.position[s][0] + P.ghost_shift[g]);
+    EXPECT_EQ(P.position[t][0], P.position[s][0] + expected_shift[g]);
     EXPECT_EQ(P.position[t][1], P.position[s][1]);
     EXPECT_EQ(P.velocity[t], P.velocity[s]);
     EXPECT_EQ(P.acceleration[t], P.acceleration[s]);
@@ -318,7 +322,7 @@ TEST(Periodic, SimulationGhostsAreTheRealParticlesNearTheEnds) {
   EXPECT_EQ(P.real_count(), std::size_t(20 * 6 + 2 * 3 * 20));
   for (std::size_t g = 0; g < P.ghost_count(); ++g) {
     const std::size_t s = P.ghost_source[g];
-    EXPECT_EQ(P.position[P.real_count() + g][0], P.position[s][0] + P.ghost_shift[g]);
+    EXPECT_EQ(P.position[P.real_count() + g][0], P.position[s][0] + P.ghost_offset[g][0]);
   }
   EXPECT_EQ(tools::IdOrdered<2>(P).id.size(), P.real_count());
 }

@@ -1,0 +1,164 @@
+// Planes of symmetry by mirror ghosts (fluid/ghosts.hpp, fluid/mirror_plane.hpp, walls[].symmetry), against exact
+// answers: the images of a point, a vector and a corrective matrix; the images a particle gets near one and two
+// planes and on one; and a quarter of a symmetric tank, with a floating box on its corner, that evolves as the whole
+// tank does (the square lattice and the box's particles are mirror-symmetric about the planes, so the quarter's
+// particles are the whole's at the same places).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include "cases/scene.hpp"
+#include "coupling/rigid_bodies.hpp"
+#include "fluid/ghosts.hpp"
+
+namespace slide {
+namespace {
+
+TEST(MirrorGhosts, ImagesOfPointsVectorsAndMatrices) {
+  const std::uint8_t flip_x = 1;
+  const Vec<3> x(0.3, -0.2, 0.5), offset(2.0 * 0.1, 0.0, 0.0);  // across x = 0.1
+  EXPECT_EQ(image_point<3>(x, flip_x, offset), Vec<3>(-0.3 + 0.2, -0.2, 0.5));
+  EXPECT_EQ(image_vector<3>(Vec<3>(1.0, 2.0, 3.0), 5), Vec<3>(-1.0, 2.0, -3.0));  // across x and z
+  Mat<3> m;
+  m << 1, 2, 3, 4, 5, 6, 7, 8, 9;
+  Mat<3> expected;  // L(a, b) s_a s_b, s = (-1, 1, 1): the first row and column negated, their corner kept
+  expected << 1, -2, -3, -4, 5, 6, -7, 8, 9;
+  EXPECT_EQ(image_matrix<3>(m, flip_x), expected);
+  // A reflection's image of a matrix is R L R: the same.
+  const Mat<3> R = Vec<3>(-1.0, 1.0, 1.0).asDiagonal();
+  EXPECT_EQ(Mat<3>(R * m * R), expected);
+}
+
+TEST(MirrorGhosts, AParticleGetsAnImageAcrossEachNearPlaneAndBoth) {
+  GhostLayout layout;
+  layout.mirrors = {{0, 0.0, true}, {1, 1.0, false}};  // x >= 0 and y <= 1
+  const double margin = 0.1;
+  Particles<3> P;
+  P.add(Vec<3>(0.5, 0.5, 0.2), Kind::fluid, 0, 1000.0, 1e-3);    // far from both: none
+  P.add(Vec<3>(0.05, 0.5, 0.2), Kind::fluid, 0, 1000.0, 1e-3);   // near x = 0: one
+  P.add(Vec<3>(0.02, 0.97, 0.2), Kind::wall, 0, 1000.0, 1e-3);   // near both: three
+  P.add(Vec<3>(0.0, 0.5, 0.2), Kind::fluid, 0, 1000.0, 1e-3);    // on x = 0: its own image, none
+  P.velocity[2] = Vec<3>(1.0, 2.0, 3.0);
+  P.wall_normal[2] = Vec<3>(0.6, -0.8, 0.0);
+  P.pressure[2] = 7.0;
+  add_ghosts(P, layout, margin);
+  ASSERT_EQ(P.real_count(), 4u);
+  ASSERT_EQ(P.ghost_count(), 4u);
+  EXPECT_EQ(P.ghost_source, (std::vector<std::uint32_t>{1, 2, 2, 2}));
+  EXPECT_EQ(P.position[4], Vec<3>(-0.05, 0.5, 0.2));
+  const Vec<3> across_x(-0.02, 0.97, 0.2), across_y(0.02, -0.97 + 2.0, 0.2), across_both(-0.02, -0.97 + 2.0, 0.2);
+  EXPECT_EQ(P.position[5], across_x);
+  EXPECT_EQ(P.position[6], across_y);
+  EXPECT_EQ(P.position[7], across_both);
+  EXPECT_EQ(P.velocity[5], Vec<3>(-1.0, 2.0, 3.0));
+  EXPECT_EQ(P.velocity[6], Vec<3>(1.0, -2.0, 3.0));
+  EXPECT_EQ(P.velocity[7], Vec<3>(-1.0, -2.0, 3.0));
+  EXPECT_EQ(P.wall_normal[7], Vec<3>(-0.6, 0.8, 0.0));
+  EXPECT_EQ(P.pressure[7], 7.0);
+  EXPECT_EQ(P.kind[7], Kind::wall);
+  // Moving the source moves its images (the motion halo).
+  P.position[2][0] = 0.03;
+  P.velocity[2][1] = 5.0;
+  sync_ghost_motion(P);
+  EXPECT_EQ(P.position[5][0], -0.03);
+  EXPECT_EQ(P.velocity[6][1], -5.0);
+  // A real fluid particle beyond a plane comes back as its image; boundary particles are left where they are.
+  remove_ghosts(P);
+  P.position[1] = Vec<3>(-0.01, 0.5, 0.2);
+  P.velocity[1] = Vec<3>(-2.0, 1.0, 0.0);
+  reflect_into_mirrors(P, layout.mirrors);
+  EXPECT_EQ(P.position[1], Vec<3>(0.01, 0.5, 0.2));
+  EXPECT_EQ(P.velocity[1], Vec<3>(2.0, 1.0, 0.0));
+}
+
+// A tank [-W, W]^2 x H whole, and its quarter [0, W]^2 with the sides x = 0 and y = 0 as planes of symmetry; water on
+// the square lattice to 0.05 m and, when asked, a floating box on the axis (density 500, free to heave only).
+std::string tank(bool quarter, bool with_box) {
+  const std::string lo = quarter ? "[0, 0, 0]" : "[-0.06, -0.06, 0]";
+  std::string s = "dimension: 3\n"
+                  "particle_spacing: 0.01\n"
+                  "lattice: square\n"
+                  "end_time: 0.01\n"
+                  "method: {initial_state: lattice}\n"
+                  "fluid:\n"
+                  "  phases: [{name: water, density: 1000}]\n"
+                  "  regions: [{type: below_level, level: 0.05}]\n"
+                  "walls: [{type: tank, min: " + lo + ", max: [0.06, 0.06, 0.2]" +
+                  (quarter ? ", symmetry: [x_min, y_min]" : "") + "}]\n";
+  if (with_box)
+    s += "bodies: [{name: box, shape: {type: box, center: [0, 0, 0.05], size: [0.04, 0.04, 0.04]}, density: 500, "
+         "locked: [x, y, rx, ry, rz]}]\n"
+         "rigid: {wall_contact: false}\n";
+  return s;
+}
+
+using Place = std::tuple<long, long, long>;
+Place place_of(const Vec<3>& x) {
+  return {std::lround(x[0] / 1e-4), std::lround(x[1] / 1e-4), std::lround(x[2] / 1e-4)};
+}
+
+// Every particle of the quarter is the whole tank's particle at its place: same kind, number density and pressure
+// (to rounding: the sums run in another order), and after 300 steps of 1e-4 s (with the neighbour lists and ghosts rebuilt on the way) the same
+// position and velocity.
+void expect_quarter_is_the_whole(bool with_box) {
+  const auto whole = cases::build_scene<3>(cases::load_scene_text(tank(false, with_box), {}), "w");
+  const auto quarter = cases::build_scene<3>(cases::load_scene_text(tank(true, with_box), {}), "q");
+  auto& W = *whole->simulation;
+  auto& Q = *quarter->simulation;
+  const auto match = [&](const char* when) {
+    std::map<Place, std::size_t> at;
+    const auto& PW = W.particles();
+    const auto& PQ = Q.particles();
+    for (std::size_t i = 0; i < PW.real_count(); ++i) at[place_of(PW.position[i])] = i;
+    std::size_t matched = 0;
+    for (std::size_t i = 0; i < PQ.real_count(); ++i) {
+      const auto it = at.find(place_of(PQ.position[i]));
+      ASSERT_NE(it, at.end()) << when << ": the whole tank has no particle at " << PQ.position[i].transpose();
+      const std::size_t j = it->second;
+      EXPECT_EQ(PQ.kind[i], PW.kind[j]);
+      EXPECT_LT((PQ.position[i] - PW.position[j]).norm(), 1e-12) << when;
+      EXPECT_LT((PQ.velocity[i] - PW.velocity[j]).norm(), 1e-10) << when;
+      EXPECT_NEAR(PQ.number_density[i], PW.number_density[j], 1e-10 * PW.number_density[j]) << when;
+      EXPECT_NEAR(PQ.pressure[i], PW.pressure[j], 1e-6) << when;  // Pa, of about 500 Pa on the floor
+      ++matched;
+    }
+    // The quarter holds a quarter of the whole's fluid and its share of the walls (no wall on its symmetry sides).
+    EXPECT_GT(matched, PW.real_count() / 5) << when;
+  };
+  match("at the start");
+  std::size_t quarter_fluid = 0, whole_fluid = 0;
+  for (std::size_t i = 0; i < Q.particles().real_count(); ++i) quarter_fluid += Q.particles().kind[i] == Kind::fluid;
+  for (std::size_t i = 0; i < W.particles().real_count(); ++i) whole_fluid += W.particles().kind[i] == Kind::fluid;
+  EXPECT_EQ(4 * quarter_fluid, whole_fluid);
+  // A flow towards the axis, mirror-symmetric, that moves the water across the planes' neighbourhoods (and rebuilds
+  // the lists): v = -u (x, y, 0) / W.
+  for (Simulation<3>* sim : {&W, &Q}) {
+    auto& P = sim->particles();
+    for (std::size_t i = 0; i < P.real_count(); ++i)
+      if (P.kind[i] == Kind::fluid) P.velocity[i] = -0.3 / 0.06 * Vec<3>(P.position[i][0], P.position[i][1], 0.0);
+    copy_to_ghosts(P, P.velocity);
+  }
+  const long rebuilds_before = Q.neighbor_rebuilds();
+  for (int s = 0; s < 300; ++s) {
+    ASSERT_FALSE(W.step(1e-4, TimeStepLimit::dt_max).has_value());
+    ASSERT_FALSE(Q.step(1e-4, TimeStepLimit::dt_max).has_value());
+  }
+  EXPECT_GE(Q.neighbor_rebuilds(), rebuilds_before + 2);  // the ghosts were made afresh on the way
+  match("after 300 steps");
+  if (!with_box) return;
+  // The quarter box has a quarter of the mass and takes a quarter of the force: it heaves as the whole one does.
+  const auto qs = Q.bodies()->state(0), ws = W.bodies()->state(0);
+  EXPECT_NEAR(qs.position[2], ws.position[2], 1e-12);
+  EXPECT_GT(std::abs(ws.velocity[2]), 1e-4);  // it does move
+  EXPECT_NEAR(4.0 * Q.bodies()->force[0].total()[2], W.bodies()->force[0].total()[2],
+              1e-9 * std::abs(W.bodies()->force[0].total()[2]));
+}
+
+TEST(MirrorGhosts, AQuarterTankEvolvesAsTheWholeOne) { expect_quarter_is_the_whole(false); }
+TEST(MirrorGhosts, AQuarterBoxOnTheAxisHeavesAsTheWholeOne) { expect_quarter_is_the_whole(true); }
+
+}  // namespace
+}  // namespace slide
