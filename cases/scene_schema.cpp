@@ -390,7 +390,7 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: boxes and spheres, free motion (prescribed motion, "
+      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres and cylinders, free motion (prescribed motion, "
       "deformable slides and other shapes are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"shape",
@@ -403,7 +403,15 @@ Schema body_schema_3d() {
                                                                   "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
                     {"sphere", S::map("a sphere", {{"center", S::vector("centre", "m", 3, std::nullopt)},
                                                    {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true,
-                                                                        false)}})}})},
+                                                                        false)}})},
+                    {"cylinder",
+                     S::map("a circular cylinder about its own z axis",
+                            {{"center", S::vector("centre (half way along its axis)", "m", 3, std::nullopt)},
+                             {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true, false)},
+                             {"height", S::number("length along its axis", "m", std::nullopt, 0.0, S::inf, true, false)},
+                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv); 0: axis along z",
+                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}})},
        {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, S::inf)},
        {"mass", S::number("mass (the whole body's where a symmetry side cuts it); 0 = density times volume", "kg",
                           0.0, 0.0, S::inf)},

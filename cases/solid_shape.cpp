@@ -1,4 +1,4 @@
-// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box and sphere, cut by the tanks' symmetry planes.
+// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box, sphere and cylinder, cut by the tanks' symmetry planes.
 #include "cases/solid_shape.hpp"
 
 #include <fmt/format.h>
@@ -77,6 +77,46 @@ std::vector<BoundaryPointOf<3>> sphere_points(const Vec<3>& centre, double radiu
   return out;
 }
 
+// Boundary points of a cylinder about its own z axis: rings of radius R - (i + 1/2) h_r (h_r = R / round(R / dp)),
+// each of round(2 pi r / dp) points, at the heights (k + 1/2) h_z - H / 2 (h_z = H / round(H / dp)), every other height
+// turned by half a point's spacing. A point's layer is the least of its ring's index and its height's index from the
+// nearer cap, as box_points takes it; behind the side its normal is radial, behind a cap axial, and in the same layer
+// behind both it points to the rim, with the depth the distance to what it faces.
+std::vector<BoundaryPointOf<3>> cylinder_points(const Vec<3>& centre, double radius, double height, const rigid::Mat3& axes,
+                                                double dp, int layers) {
+  const long rings = std::max(1L, std::lround(radius / dp)), levels = std::max(1L, std::lround(height / dp));
+  const double h_r = radius / double(rings), h_z = height / double(levels);
+  std::vector<BoundaryPointOf<3>> out;
+  for (long k = 0; k < levels; ++k) {
+    const double z = (k + 0.5) * h_z - 0.5 * height, to_cap = std::copysign(0.5 * height - std::abs(z), z);
+    const long from_cap = std::min(k, levels - 1 - k);
+    for (long i = 0; i < rings; ++i) {
+      const long layer = std::min(i, from_cap);
+      if (layer >= layers) continue;
+      const double r = radius - (i + 0.5) * h_r;
+      const long count = std::max(1L, std::lround(2.0 * M_PI * r / dp));
+      for (long m = 0; m < count; ++m) {
+        const double phi = 2.0 * M_PI * (m + 0.5 * double(k % 2)) / double(count);
+        const Vec<3> radial(std::cos(phi), std::sin(phi), 0.0);
+        Vec<3> out_dir = Vec<3>::Zero();
+        if (i == layer) out_dir += (radius - r) * radial;
+        if (from_cap == layer) out_dir[2] = to_cap;
+        const Vec<3> local(r * radial[0], r * radial[1], z);
+        out.push_back({centre + axes * local, Vec<3>(axes * out_dir.normalized()), out_dir.norm(), int(layer)});
+      }
+    }
+  }
+  return out;
+}
+
+// The exact signed distance to a cylinder (negative inside): from the side d_r = |q_xy| - R and the caps
+// d_z = |q_z| - H / 2 in its own frame q, min(max(d_r, d_z), 0) + |(max(d_r, 0), max(d_z, 0))|.
+double cylinder_signed_distance(const Vec<3>& p, const Vec<3>& centre, double radius, double height, const rigid::Mat3& axes) {
+  const Vec<3> q = axes.transpose() * (p - centre);
+  const double d_r = std::hypot(q[0], q[1]) - radius, d_z = std::abs(q[2]) - 0.5 * height;
+  return std::min(std::max(d_r, d_z), 0.0) + std::hypot(std::max(d_r, 0.0), std::max(d_z, 0.0));
+}
+
 double box_signed_distance(const Vec<3>& p, const Vec<3>& centre, const Vec<3>& size, const rigid::Mat3& axes) {
   const Vec<3> q = (axes.transpose() * (p - centre)).cwiseAbs() - 0.5 * size;
   return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
@@ -130,6 +170,21 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     s.inset = [centre, radius, path](double margin) {
       if (!(radius > 1.5 * margin)) throw SceneError(path + ".shape.radius", "too small for the collision margin");
       return rigid::sphere_surface(centre, radius - margin);
+    };
+  } else if (type == "cylinder") {
+    const double radius = shape["radius"].as<double>(), height = shape["height"].as<double>();
+    if (!(radius > 0.0)) throw SceneError(path + ".shape.radius", "must be positive");
+    if (!(height > 0.0)) throw SceneError(path + ".shape.height", "must be positive");
+    s.axes = axes_of(shape);
+    s.surface = rigid::cylinder_surface(centre, radius, height, s.axes);
+    s.signed_distance = [centre, radius, height, axes = s.axes](const Vec<3>& p) {
+      return cylinder_signed_distance(p, centre, radius, height, axes);
+    };
+    s.points = cylinder_points(centre, radius, height, s.axes, dp, layers);
+    s.inset = [centre, radius, height, axes = s.axes, path](double margin) {
+      if (!(radius > 1.5 * margin)) throw SceneError(path + ".shape.radius", "too small for the collision margin");
+      if (!(height > 3.0 * margin)) throw SceneError(path + ".shape.height", "too small for the collision margin");
+      return rigid::cylinder_surface(centre, radius - margin, height - 2.0 * margin, axes);
     };
   } else {
     const Vec<3> size = vec_of<3>(shape["size"]);

@@ -263,4 +263,41 @@ inline TriangleSurface sphere_surface(const Vec3& centre, double radius, int rin
   return s;
 }
 
+// A right prism: the convex polygon `outline` (counter-clockwise in the prism's own x-y plane, about its axis) swept
+// along its own z over `height`, centred on z = 0, then turned by `axes` and moved to `centre`. Caps as fans from the
+// first vertex (hence convex), sides as two triangles an edge, all outward.
+inline TriangleSurface prism_surface(const std::vector<std::array<double, 2>>& outline, double height, const Vec3& centre,
+                                     const Mat3& axes = Mat3::Identity()) {
+  const int n = static_cast<int>(outline.size());
+  if (n < 3) throw std::invalid_argument("a prism needs an outline of at least 3 vertices");
+  TriangleSurface s;
+  for (const double z : {-0.5 * height, 0.5 * height})
+    for (const auto& v : outline) s.vertices.push_back(centre + axes * Vec3(v[0], v[1], z));
+  const auto bottom = [](int i) { return i; };
+  const auto top = [n](int i) { return n + i; };
+  for (int i = 1; i + 1 < n; ++i) {
+    s.triangles.push_back({bottom(0), bottom(i + 1), bottom(i)});
+    s.triangles.push_back({top(0), top(i), top(i + 1)});
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    s.triangles.push_back({bottom(i), bottom(j), top(j)});
+    s.triangles.push_back({bottom(i), top(j), top(i)});
+  }
+  return s;
+}
+
+// A circular cylinder of `radius` and `height` about its own z axis (turned by `axes`, centred on `centre`): a prism on
+// a regular polygon of `sides`, its circumradius raised so that the polygon's area is pi radius^2 (the volume exact).
+inline TriangleSurface cylinder_surface(const Vec3& centre, double radius, double height, const Mat3& axes = Mat3::Identity(),
+                                        int sides = 64) {
+  if (sides < 3) throw std::invalid_argument("a cylinder needs at least 3 sides");
+  const double step = 2.0 * M_PI / sides;
+  // A regular polygon of circumradius c has area (sides / 2) c^2 sin(step).
+  const double c = radius * std::sqrt(2.0 * M_PI / (sides * std::sin(step)));
+  std::vector<std::array<double, 2>> outline;
+  for (int k = 0; k < sides; ++k) outline.push_back({c * std::cos(k * step), c * std::sin(k * step)});
+  return prism_surface(outline, height, centre, axes);
+}
+
 }  // namespace slide::rigid

@@ -118,6 +118,29 @@ TEST(SolidBody, SphereAndItsHalvesMatchClosedForms) {
   EXPECT_THROW(sphere_surface(c, R, 7), std::invalid_argument);
 }
 
+// A prism on a triangle (the Heinrich wedge's kind): volume, centroid and the moment about its axis exactly; a
+// cylinder, on its 64-sided prism of the same area: volume exactly, moments within the polygon's 1e-3.
+TEST(SolidBody, PrismAndCylinderMatchClosedForms) {
+  const double b = 0.4, h = 0.3, L = 0.2;  // a right triangle of legs b (x) and h (y), swept over L
+  const Vec3 c(1.0, 2.0, 3.0);
+  const MassProperties prism = mass_properties(prism_surface({{0.0, 0.0}, {b, 0.0}, {0.0, h}}, L, c));
+  EXPECT_NEAR(prism.volume, 0.5 * b * h * L, 1e-14);
+  EXPECT_NEAR((prism.centroid - (c + Vec3(b / 3.0, h / 3.0, 0.0))).norm(), 0.0, 1e-14);
+  // About the axis through the centroid along z: the triangle's polar moment (b h / 36)(b^2 + h^2) times L.
+  EXPECT_NEAR(prism.inertia(2, 2), b * h / 36.0 * (b * b + h * h) * L, 1e-14);
+  EXPECT_THROW(prism_surface({{0.0, 0.0}, {1.0, 0.0}}, 1.0, c), std::invalid_argument);
+
+  const double R = 0.1, H = 0.25, V = M_PI * R * R * H;
+  const Mat3 axes(Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitX()));  // lying: its axis along -y
+  const MassProperties cyl = mass_properties(cylinder_surface(c, R, H, axes));
+  EXPECT_NEAR(cyl.volume, V, 1e-12 * V);
+  EXPECT_NEAR((cyl.centroid - c).norm(), 0.0, 1e-14);
+  const double about_axis = 0.5 * V * R * R, across = V * (3.0 * R * R + H * H) / 12.0;
+  EXPECT_NEAR(cyl.inertia(1, 1), about_axis, 1e-3 * about_axis);
+  EXPECT_NEAR(cyl.inertia(0, 0), across, 1e-3 * across);
+  EXPECT_NEAR(cyl.inertia(2, 2), across, 1e-3 * across);
+}
+
 TEST(SolidBody, FreeFlightKeepsVelocityAndSpinAboutAPrincipalAxis) {
   RigidWorld w(Vec3(0.0, 0.0, 0.0), 1e-3);
   const int b = w.add_solid(box_solid(Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.1, 0.05), 800.0));

@@ -163,6 +163,36 @@ TEST(Scene3D, SphereCutBySymmetryPlanesIsItsQuarter) {
   EXPECT_GE(body_particles, rep.particles);
 }
 
+// A cylinder body: its mass from its density and exact volume; its boundary particles inside it, the wall layer
+// half a spacing in from its side, caps and rims, one a dp^2 of that layer's surface (within 5 %).
+TEST(Scene3D, CylinderBodyHasItsVolumeAndItsSurfaceParticles) {
+  const std::string scene_text = tank_scene("square", "bodies: [{name: drum, shape: {type: cylinder, center: [0.05, "
+                                                      "0.05, 0.1], radius: 0.03, height: 0.04, angles: [90, 0, 0]}, "
+                                                      "density: 600}]\n");
+  const auto scene = build_scene<3>(load_scene_text(scene_text, {}), "s");
+  ASSERT_EQ(scene->bodies.size(), 1u);
+  const double R = 0.03, H = 0.04;
+  EXPECT_NEAR(scene->bodies[0].mass, 600.0 * M_PI * R * R * H, 1e-12);
+  const auto& P = scene->simulation->particles();
+  std::size_t wall_layer = 0;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    if (P.body_of(i) != 0) continue;
+    const Vec<3> q = P.position[i] - Vec<3>(0.05, 0.05, 0.1);  // its axis along y (turned 90 degrees about x)
+    const double d_r = std::hypot(q[0], q[2]) - R, d_y = std::abs(q[1]) - 0.5 * H;
+    EXPECT_LT(std::max(d_r, d_y), 0.0);
+    if (P.kind[i] != Kind::wall) continue;
+    ++wall_layer;
+    // Half a grid step (R / 3 or H / 4 here) in from what it faces.
+    EXPECT_NEAR(std::min(std::abs(d_r), std::abs(d_y)), 0.005, 1e-12);
+    // Its depth: to the side or a cap, or to the rim where it is behind both.
+    const bool rim = std::abs(d_r + 0.005) < 1e-12 && std::abs(d_y + 0.005) < 1e-12;
+    EXPECT_NEAR(P.wall_depth[i], rim ? 0.005 * std::sqrt(2.0) : 0.005, 1e-12);
+  }
+  // The wall layer's own surface: the side at R - dp / 2 over H, and the caps inside the side's ring.
+  const double area = 2.0 * M_PI * (R - 0.005) * H + 2.0 * M_PI * (R - 0.01) * (R - 0.01);
+  EXPECT_NEAR(double(wall_layer), area / (0.01 * 0.01), 0.05 * area / (0.01 * 0.01));
+}
+
 // A side of symmetry is free-slip by its mirror images whatever the other walls are; a body it cuts must move along it.
 TEST(Scene3D, RefusesABodyThatMayLeaveItsSymmetryPlanes) {
   EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz]", "wall_slip: no_slip")),
