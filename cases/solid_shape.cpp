@@ -207,7 +207,11 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     } catch (const std::invalid_argument&) {
       throw SceneError(path + ".shape", fmt::format("lies wholly beyond the symmetry plane {}", plane.key));
     }
-    std::erase_if(s.points, [&](const BoundaryPointOf<3>& p) { return !plane.keeps(p.position); });
+    // A point on the plane (a ring's first point, a box's middle row) is its own mirror image: kept, put on it exactly.
+    const double on = 1e-9 * dp;
+    std::erase_if(s.points, [&](const BoundaryPointOf<3>& p) { return !plane.keeps(p.position) && !plane.holds(p.position, on); });
+    for (auto& p : s.points)
+      if (plane.holds(p.position, on)) p.position += (plane.offset - plane.normal.dot(p.position)) * plane.normal;
   }
   s.inset = [whole = s.inset, planes, path](double margin) {
     rigid::TriangleSurface hull = whole(margin);

@@ -5,6 +5,7 @@
 // distance (where water may stand) and boundary points in layers with normals (the particles that carry it).
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ struct SymmetryPlane {
   double offset = 0.0;
   std::string key;  // walls[w].symmetry, for messages
   bool keeps(const Vec<3>& p) const { return normal.dot(p) < offset; }
+  // Whether p lies on the plane, within `tolerance`.
+  bool holds(const Vec<3>& p, double tolerance) const { return std::abs(normal.dot(p) - offset) <= tolerance; }
   // The plane as the solver's ghosts know it (fluid/mirror_plane.hpp).
   MirrorPlane mirror() const;
 };

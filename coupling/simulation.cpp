@@ -67,7 +67,7 @@ void Simulation<D>::check_mirror_setup() const {
                                     std::to_string(2.0 * list_radius()) + " m)");
     const auto& P = domain_.particles;
     for (std::size_t i = 0; i < P.real_count(); ++i)  // fluid that crossed comes back at the next rebuild
-      if (P.kind[i] != Kind::fluid && M[k].inside(P.position[i][M[k].axis]) < 0.0)
+      if (P.kind[i] != Kind::fluid && M[k].inside(P.position[i][M[k].axis]) < -1e-9 * options.dp)
         throw std::invalid_argument("boundary particle " + std::to_string(P.id[i]) + " lies beyond a plane of symmetry (" +
                                     std::string(1, "xyz"[M[k].axis]) + " = " + std::to_string(M[k].at) + ")");
   }
@@ -715,6 +715,10 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(domain_.particles.ghost_source);
   in.get(domain_.particles.ghost_flip);
   in.get(domain_.particles.ghost_offset);
+  if (domain_.particles.ghost_flip.size() != domain_.particles.ghost_source.size() ||
+      domain_.particles.ghost_offset.size() != domain_.particles.ghost_source.size() ||
+      domain_.particles.ghost_source.size() > domain_.particles.size())
+    throw std::runtime_error("the checkpoint's ghosts do not match its particles");
   domain_.particles.removed_count = in.get<std::uint64_t>();
   if (domain_.particles.real_count() + domain_.particles.removed_count != made)
     throw std::runtime_error("the checkpoint's particles are not the scene's");

@@ -44,8 +44,8 @@ inline std::vector<BoundaryPointOf<3>> tank_boundary(LatticeKind kind, const Vec
   std::vector<BoundaryPointOf<3>> out;
   for_each_lattice_point(kind, dp, box_lo, box_hi, [&](const Vec<3>& p) {
     if (p[2] > hi[2] + eps || p[2] < box_lo[2] - eps || inside_tank(p, lo, hi, eps)) return;
-    for (int a = 0; a < 2; ++a)  // on or beyond a plane of symmetry: its mirror images' place
-      if ((mirror(a, false) && p[a] <= lo[a] + eps) || (mirror(a, true) && p[a] >= hi[a] - eps)) return;
+    for (int a = 0; a < 2; ++a)  // beyond a plane of symmetry: its mirror images' place (a point on it is its own)
+      if ((mirror(a, false) && p[a] < lo[a] - eps) || (mirror(a, true) && p[a] > hi[a] + eps)) return;
     Vec<3> nearest = p;  // the nearest point of the inside, open above and through the planes of symmetry
     for (int a = 0; a < 3; ++a)
       if (a == 2 || !mirror(a, false)) nearest[a] = std::max(nearest[a], lo[a]);

@@ -18,6 +18,7 @@
 // each stage changes that neighbours read (sync_ghost_motion after a move, copy_to_ghosts for one array). A real
 // particle that drifts past an end or a plane between rebuilds keeps correct neighbours: it and the images near it have
 // moved less than half the skin since the list was built, the same argument as for any pair.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -121,7 +122,8 @@ void copy_to_ghosts(const Particles<D>& P, std::vector<T>& v) {
 
 // The images one real particle at x gets, in a fixed order: for each shift (none, +L near x_min, -L near x_max) and
 // each set of the planes it lies near (by their order in the layout; the empty set only with a shift), one image.
-// A particle on a plane is its own image there and gets none across it (it would sit on itself).
+// A particle on a plane (within a billionth of the margin) is its own image there and gets none across it (it would
+// sit on itself or next to it).
 template <int D, class Add>
 void images_of(const Vec<D>& x, const GhostLayout& layout, double margin, Add&& add) {
   std::vector<double> shifts{0.0};
@@ -132,7 +134,7 @@ void images_of(const Vec<D>& x, const GhostLayout& layout, double margin, Add&& 
   std::vector<std::size_t> near;
   for (std::size_t k = 0; k < layout.mirrors.size(); ++k) {
     const double d = layout.mirrors[k].inside(x[layout.mirrors[k].axis]);
-    if (d < margin && d != 0.0) near.push_back(k);
+    if (d < margin && std::abs(d) > 1e-9 * margin) near.push_back(k);
   }
   const std::size_t subsets = std::size_t(1) << near.size();
   for (const double shift : shifts)
@@ -157,7 +159,7 @@ void images_of(const Vec<D>& x, const GhostLayout& layout, double margin, Add&& 
 // plane of symmetry: then every real particle has every neighbour it can have before the next rebuild. Ghosts are
 // appended in the order of their sources, each source's in images_of's order, so their order is fixed by the real
 // particles' order alone. Needs a period of at least 2 margin (one image per side suffices), planes on one axis at
-// least 2 margin apart (check_ghost_layout), and no ghosts present.
+// least 2 margin apart (Simulation::check_mirror_setup), and no ghosts present.
 template <int D>
 void add_ghosts(Particles<D>& P, const GhostLayout& layout, double margin) {
   if (P.ghost_count() != 0) throw std::logic_error("add_ghosts: ghosts are already present");

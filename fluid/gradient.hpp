@@ -249,8 +249,10 @@ Vec<D> pressure_gradient_pair(GradientModel m, std::size_t i, std::uint32_t j, c
     case GradientModel::standard:
       return (D / n0) * pressure_pair_term<D, GradientModel::standard>(i, j, rij, r2, P, re, P.pressure[i]);
     case GradientModel::pmin:
-      return (D / n0) * pressure_pair_term<D, GradientModel::pmin>(i, j, rij, r2, P, re,
-                                                                    neighborhood_min_pressure<D>(i, P, nl, re));
+      // A ghost (a body's fluid neighbour beyond a plane of symmetry) has no list of its own: its source's
+      // neighbourhood, whose minimum is the same (found in review).
+      return (D / n0) * pressure_pair_term<D, GradientModel::pmin>(
+                            i, j, rij, r2, P, re, neighborhood_min_pressure<D>(P.real_index(i), P, nl, re));
     case GradientModel::symmetric:
       return (D / n0) * pressure_pair_term<D, GradientModel::symmetric>(i, j, rij, r2, P, re, P.pressure[i]);
     case GradientModel::variational: return (1.0 / (kappa * n0)) * derivative_pair_term<D, true>(i, j, rij, r2, P, re);

@@ -39,8 +39,12 @@ Heave heave_at(double dp) {
   std::snprintf(center, sizeof center, "bodies[0].shape.center=[0, 0, %.9f]", h.rest_z + H0);
   auto scene = load_shipped_scene<3>("kramer2021_sphere_3d.yaml", {spacing, center});
   auto& bodies = *scene->simulation->bodies();
+  // Sampled every 5 ms, as bodies.csv is (a step's noise would add turning points of its own).
   std::vector<double> t, x3;
+  double next_sample = 0.0;
   EXPECT_TRUE(run_scene<3>(*scene, [&](const Simulation<3>& s) {
+    if (s.time() < next_sample) return;
+    next_sample += 0.005;
     t.push_back(s.time() / Te0);
     x3.push_back((bodies.state(0).position[2] - h.rest_z) / H0);
   }));
@@ -56,6 +60,10 @@ std::vector<tools::Extremum> data_extrema() {
 
 // Issue 31: the first period within 5 % and the first trough within 10 % of the drop. The period is taken as the time
 // of the first crest (the sphere is released at one); the first four extrema are printed against the data.
+// Measured at stop 42 (the same runs through `slide run`, bodies.csv every 5 ms): rest at 0.899181 m; extrema -0.738 /
+// +0.699 / -0.295 / +0.283 at t/Te0 0.510 / 1.027 / 1.548 / 2.045, against the data's -0.854 / +0.630 / -0.455 /
+// +0.333 at 0.510 / 1.016 / 1.522 / 2.018: the period +1.0 % (met), the first trough 0.115 of the drop short (the
+// issue's 0.10 not met: this test fails by that much at dp 0.02).
 TEST(LongKramerSphere, HeaveDecayAtDp0_02FollowsTheExperiment) {
   const Heave h = heave_at(0.02);
   const auto data = data_extrema();
