@@ -18,6 +18,7 @@
 // each stage changes that neighbours read (sync_ghost_motion after a move, copy_to_ghosts for one array). A real
 // particle that drifts past an end or a plane between rebuilds keeps correct neighbours: it and the images near it have
 // moved less than half the skin since the list was built, the same argument as for any pair.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -126,25 +127,29 @@ void copy_to_ghosts(const Particles<D>& P, std::vector<T>& v) {
 // sit on itself or next to it).
 template <int D, class Add>
 void images_of(const Vec<D>& x, const GhostLayout& layout, double margin, Add&& add) {
-  std::vector<double> shifts{0.0};
+  // Fixed-size lists: this runs for every particle at every rebuild (no allocation per particle, found in review).
+  std::array<double, 3> shifts{0.0, 0.0, 0.0};
+  std::size_t shift_count = 1;
   if (layout.period) {
-    if (x[0] - layout.period->x_min < margin) shifts.push_back(layout.period->length());
-    if (layout.period->x_max - x[0] < margin) shifts.push_back(-layout.period->length());
+    if (x[0] - layout.period->x_min < margin) shifts[shift_count++] = layout.period->length();
+    if (layout.period->x_max - x[0] < margin) shifts[shift_count++] = -layout.period->length();
   }
-  std::vector<std::size_t> near;
-  for (std::size_t k = 0; k < layout.mirrors.size(); ++k) {
+  std::array<std::size_t, 8> near{};  // a plane per side of each axis: at most 6
+  std::size_t near_count = 0;
+  for (std::size_t k = 0; k < layout.mirrors.size() && near_count < near.size(); ++k) {
     const double d = layout.mirrors[k].inside(x[layout.mirrors[k].axis]);
-    if (d < margin && std::abs(d) > 1e-9 * margin) near.push_back(k);
+    if (d < margin && std::abs(d) > 1e-9 * margin) near[near_count++] = k;
   }
-  const std::size_t subsets = std::size_t(1) << near.size();
-  for (const double shift : shifts)
+  const std::size_t subsets = std::size_t(1) << near_count;
+  for (std::size_t h = 0; h < shift_count; ++h)
     for (std::size_t set = 0; set < subsets; ++set) {
+      const double shift = shifts[h];
       if (set == 0 && shift == 0.0) continue;
       std::uint8_t flip = 0;
       Vec<D> offset = Vec<D>::Zero();
       offset[0] = shift;
       bool twice_on_one_axis = false;
-      for (std::size_t b = 0; b < near.size(); ++b) {
+      for (std::size_t b = 0; b < near_count; ++b) {
         if (!(set >> b & 1u)) continue;
         const MirrorPlane& m = layout.mirrors[near[b]];
         twice_on_one_axis = twice_on_one_axis || (flip >> m.axis & 1u);
