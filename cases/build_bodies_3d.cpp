@@ -22,7 +22,7 @@ namespace {
 // `with_points`.
 SolidShape body_shape(const SceneBuild<3>& b, const YAML::Node& bn, const std::string& path, bool with_points) {
   return solid_shape(bn["shape"], path, symmetry_planes(b.r), b.dp,
-                     with_points ? boundary_layers(b.sim->options.re_over_dp) : 0);
+                     with_points ? boundary_layers(b.sim->options.re_over_dp) : 0, b.scene_dir);
 }
 
 // Mass from density or mass, and the inertia tensor from the surface (uniform density). A body cut by a symmetry
@@ -145,7 +145,7 @@ void place_floating_bodies(SceneBuild<3>& b) {
     if (mass >= water_density * rigid::mass_properties(surface).volume) continue;  // it sinks
     const double rise = rise_to_draft(surface, mass, water_density, level);
     if (std::abs(rise) < 1e-9 * b.dp) continue;
-    YAML::Node centre = bn["shape"]["center"];
+    YAML::Node centre = bn["shape"][placement_key(bn["shape"])];
     centre[2] = centre[2].as<double>() + rise;
     b.moved_to_draft.emplace_back(path, rise);
   }

@@ -390,7 +390,7 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres and cylinders, free motion (prescribed motion, "
+      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders and convex meshes, free motion (prescribed motion, "
       "deformable slides and other shapes are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"shape",
@@ -411,7 +411,20 @@ Schema body_schema_3d() {
                              {"height", S::number("length along its axis", "m", std::nullopt, 0.0, S::inf, true, false)},
                              {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
                                                   "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv); 0: axis along z",
-                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}})},
+                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
+                    {"mesh",
+                     S::map("a closed triangle mesh from a file (convex so far), checked before anything runs: closed, "
+                            "its faces consistently and outward oriented, a positive volume, no face cutting another "
+                            "(mesh/closed_mesh.hpp); a point x of the file goes to position + R (scale x)",
+                            {{"file", S::text("an .stl (binary or ASCII) or .obj file, relative to the scene's folder",
+                                              std::nullopt)},
+                             {"scale", S::number("factor on the file's coordinates (e.g. 0.001 for millimetres)", "",
+                                                 1.0, 0.0, S::inf, true, false)},
+                             {"position", S::vector("where the file's origin goes", "m", 3,
+                                                    std::vector<double>{0.0, 0.0, 0.0})},
+                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv), about the file's "
+                                                  "origin", "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}})},
        {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, S::inf)},
        {"mass", S::number("mass (the whole body's where a symmetry side cuts it); 0 = density times volume", "kg",
                           0.0, 0.0, S::inf)},

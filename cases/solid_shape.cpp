@@ -5,9 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "cases/scene_geometry.hpp"
 #include "cases/schema.hpp"
+#include "mesh/closed_mesh.hpp"
+#include "mesh/even_surface_samples.hpp"
+#include "mesh/mesh_distance.hpp"
 
 namespace slide::cases {
 namespace {
@@ -122,7 +126,57 @@ double box_signed_distance(const Vec<3>& p, const Vec<3>& centre, const Vec<3>& 
   return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
 }
 
+// Boundary points of a closed mesh: its surface spread evenly with one point per dp^2 (mesh/even_surface_samples.hpp),
+// layer l those points moved in along their face's inward normal by (l + 1/2) dp. Near an edge a point so moved may
+// come nearer another face: it is kept while its distance to the surface is within dp/4 of its layer's depth (at a
+// convex edge the two faces' points so meet near the bisector; a thin part keeps the layers it has room for). Its
+// normal points to the surface's nearest point and its depth is its distance to it, as at a box's edges.
+std::vector<BoundaryPointOf<3>> mesh_points(const rigid::TriangleSurface& surface, const mesh::MeshDistance& distance,
+                                            double dp, int layers) {
+  if (layers <= 0) return {};
+  const auto samples = mesh::even_surface_samples(surface, dp);
+  std::vector<BoundaryPointOf<3>> out;
+  for (int l = 0; l < layers; ++l) {
+    const double depth = (l + 0.5) * dp;
+    for (const auto& sample : samples) {
+      const Vec<3> p = sample.point - depth * rigid::outward_normal(surface, surface.triangles[std::size_t(sample.triangle)]);
+      const double d = -distance.signed_distance(p);
+      if (d < depth - 0.25 * dp || d > depth + 0.25 * dp) continue;
+      out.push_back({p, Vec<3>((distance.nearest_point(p) - p).normalized()), d, l});
+    }
+  }
+  return out;
+}
+
+// The surface in bodies[k].shape.file, placed: a file point x goes to position + R (scale x). Throws SceneError naming
+// the key, the file and its defect.
+rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& path, const std::filesystem::path& scene_dir,
+                                   const rigid::Mat3& axes) {
+  const std::filesystem::path file = scene_dir / shape["file"].as<std::string>();
+  rigid::TriangleSurface m;
+  try {
+    m = mesh::read_closed_mesh(file);
+  } catch (const mesh::MeshError& e) {
+    throw SceneError(path + ".shape.file", fmt::format("{}: {}", file.string(), e.what()));
+  }
+  const double scale = shape["scale"].as<double>();
+  const Vec<3> position = vec_of<3>(shape["position"]);
+  for (auto& v : m.vertices) v = position + axes * (scale * v);
+  double size = 0.0;
+  for (const auto& v : m.vertices) size = std::max(size, (v - m.vertices[0]).norm());
+  // Bullet takes a moving body's convex hull, the symmetry cut and the collision inset are written for convex shapes.
+  if (!rigid::is_convex(m, 1e-9 * size))
+    throw SceneError(path + ".shape.file", fmt::format("{}: it is not convex, and a body's mesh must be so far (a concave "
+                                                       "moving body needs a convex decomposition, not yet built)",
+                                                       file.string()));
+  return m;
+}
+
 }  // namespace
+
+const char* placement_key(const YAML::Node& shape) {
+  return shape["type"].as<std::string>() == "mesh" ? "position" : "center";
+}
 
 std::vector<SymmetryPlane> symmetry_planes(const YAML::Node& resolved) {
   std::vector<SymmetryPlane> planes;
@@ -157,11 +211,26 @@ MirrorPlane SymmetryPlane::mirror() const {
 bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < whole_volume * (1.0 - 1e-12); }
 
 SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
-                       double dp, int layers) {
+                       double dp, int layers, const std::filesystem::path& scene_dir) {
   SolidShape s;
   const std::string type = shape["type"].as<std::string>();
-  const Vec<3> centre = vec_of<3>(shape["center"]);
-  if (type == "sphere") {
+  const Vec<3> centre = type == "mesh" ? Vec<3>::Zero() : vec_of<3>(shape["center"]);
+  if (type == "mesh") {
+    s.axes = axes_of(shape);
+    s.surface = placed_mesh(shape, path, scene_dir, s.axes);
+    const auto distance = std::make_shared<const mesh::MeshDistance>(s.surface);
+    s.signed_distance = [distance](const Vec<3>& p) { return distance->signed_distance(p); };
+    s.points = mesh_points(s.surface, *distance, dp, layers);
+    s.inset = [whole = s.surface, path](double margin) {
+      rigid::TriangleSurface hull = whole;
+      try {
+        hull.vertices = rigid::inset_convex(whole, margin);
+      } catch (const std::invalid_argument&) {
+        throw SceneError(path + ".shape", "too thin for the collision margin");
+      }
+      return hull;
+    };
+  } else if (type == "sphere") {
     const double radius = shape["radius"].as<double>();
     if (!(radius > 0.0)) throw SceneError(path + ".shape.radius", "must be positive");
     s.surface = rigid::sphere_surface(centre, radius);

@@ -1,11 +1,12 @@
 #pragma once
-// A 3-D body's shape (bodies[].shape, dimension: 3): its closed surface, its signed distance and its boundary points,
+// A 3-D body's shape (bodies[].shape, dimension: 3: box, sphere, cylinder, a closed mesh from a file): its closed surface, its signed distance and its boundary points,
 // cut by the scene's symmetry planes. To add a shape: its variant in body_schema_3d (cases/scene_schema.cpp) and its
 // case in solid_shape (solid_shape.cpp): a closed outward surface (mass properties, Bullet's hull, the draft), a signed
 // distance (where water may stand) and boundary points in layers with normals (the particles that carry it).
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -46,8 +47,11 @@ struct SolidShape {
 };
 
 // The shape of bodies[k] (`shape` its shape node, `path` its key path), its boundary points in `layers` layers at the
-// spacing dp. Throws SceneError naming the key for a degenerate shape.
+// spacing dp; a mesh file is looked up from `scene_dir`. Throws SceneError naming the key for a degenerate shape.
 SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
-                       double dp, int layers);
+                       double dp, int layers, const std::filesystem::path& scene_dir);
+
+// The key of a shape that says where it is: `center`, or a mesh's `position` (where the file's origin goes).
+const char* placement_key(const YAML::Node& shape);
 
 }  // namespace slide::cases

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace slide::rigid {
@@ -147,6 +148,26 @@ inline double distance_to_surface(const TriangleSurface& s, const Vec3& p) {
   for (const auto& t : s.triangles)
     best = std::min(best, (closest_point_on_triangle(p, s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]) - p).norm());
   return best;
+}
+
+// Whether a closed, consistently outward surface is convex: at every edge, the far corner of each of its two faces lies
+// on or behind the other face's plane (within `tolerance`, m). Convex at every edge and closed without
+// self-intersection is convex as a whole.
+inline bool is_convex(const TriangleSurface& s, double tolerance) {
+  std::map<std::pair<int, int>, std::size_t> face_of;  // directed edge -> the face it runs along
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) face_of[{s.triangles[t][k], s.triangles[t][(k + 1) % 3]}] = t;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    const auto& tri = s.triangles[t];
+    const Vec3 n = outward_normal(s, tri);
+    for (int k = 0; k < 3; ++k) {
+      const auto other = face_of.find({tri[(k + 1) % 3], tri[k]});
+      if (other == face_of.end()) continue;
+      for (const int v : s.triangles[other->second])
+        if (n.dot(s.vertices[v] - s.vertices[tri[0]]) > tolerance) return false;
+    }
+  }
+  return true;
 }
 
 // Whether p lies inside (or on) a convex surface: behind every triangle's plane.

@@ -7,6 +7,8 @@
 
 #include "cases/scene.hpp"
 #include "coupling/rigid_bodies.hpp"
+#include "tests/cli_helpers.hpp"
+#include "tests/mesh_files.hpp"
 
 namespace slide::cases {
 namespace {
@@ -203,6 +205,83 @@ TEST(Scene3D, RefusesABodyThatMayLeaveItsSymmetryPlanes) {
   EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz]").replace(
                 quarter_sphere_scene("").find("radius: 0.05"), 12, "radius: 0.0")),
             "bodies[0].shape.radius");
+}
+
+
+// A box given as a mesh file (in millimetres, turned 30 degrees about z) is the same body as the box shape: the same
+// mass, centre and inertia; its boundary particles lie inside it, the wall layer about half a spacing in.
+TEST(Scene3D, MeshBodyIsTheBodyItsFileDescribes) {
+  const auto dir = testing::fresh_directory("mesh_body");
+  testing::write_stl_binary(dir / "box_mm.stl", rigid::box_surface(rigid::Vec3::Zero(), rigid::Vec3(60.0, 60.0, 40.0)));
+  const std::string mesh = "bodies: [{name: b, shape: {type: mesh, file: box_mm.stl, scale: 0.001, position: [0.05, "
+                           "0.05, 0.06], angles: [0, 0, 30]}, density: 600}]\n";
+  const std::string box = "bodies: [{name: b, shape: {type: box, center: [0.05, 0.05, 0.06], size: [0.06, 0.06, 0.04], "
+                          "angles: [0, 0, 30]}, density: 600}]\n";
+  const auto from_mesh = build_scene<3>(load_scene_text(tank_scene("square", mesh), {}), "s", dir);
+  const auto from_box = build_scene<3>(load_scene_text(tank_scene("square", box), {}), "s", dir);
+  ASSERT_EQ(from_mesh->bodies.size(), 1u);
+  EXPECT_NEAR(from_mesh->bodies[0].mass, 600.0 * 0.06 * 0.06 * 0.04, 1e-9);  // float coordinates in the file
+  EXPECT_NEAR(from_mesh->bodies[0].mass, from_box->bodies[0].mass, 1e-9);
+  EXPECT_NEAR(from_mesh->bodies[0].inertia, from_box->bodies[0].inertia, 1e-12);
+  EXPECT_NEAR((from_mesh->bodies[0].placed - from_box->bodies[0].placed).norm(), 0.0, 1e-9);
+  const auto& P = from_mesh->simulation->particles();
+  const rigid::Mat3 turn(Eigen::AngleAxisd(M_PI / 6.0, Eigen::Vector3d::UnitZ()));
+  std::size_t wall_layer = 0;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    const Vec<3> q = (turn.transpose() * (P.position[i] - Vec<3>(0.05, 0.05, 0.06))).cwiseAbs() - Vec<3>(0.03, 0.03, 0.02);
+    if (P.kind[i] == Kind::fluid) {
+      EXPECT_GE(q.maxCoeff(), 0.5 * 0.01 - 1e-9) << "water at " << P.position[i].transpose();
+      continue;
+    }
+    if (P.body_of(i) != 0) continue;
+    EXPECT_LT(q.maxCoeff(), 0.0);
+    EXPECT_NEAR(P.wall_depth[i], -q.maxCoeff(), 1e-9);  // its depth is its distance to the nearest face
+    EXPECT_NEAR(P.wall_normal[i].norm(), 1.0, 1e-12);
+    if (P.kind[i] != Kind::wall) continue;
+    ++wall_layer;
+    EXPECT_NEAR(P.wall_depth[i], 0.005, 0.0025 + 1e-9);
+  }
+  // Between the wall layer's own surface (the box inset by dp / 2) and the box's surface, one point per dp^2.
+  const double inset = 2.0 * (0.05 * 0.05 + 2.0 * 0.05 * 0.03), outer = 2.0 * (0.06 * 0.06 + 2.0 * 0.06 * 0.04);
+  EXPECT_GT(double(wall_layer), inset / 1e-4);
+  EXPECT_LT(double(wall_layer), outer / 1e-4);
+}
+
+TEST(Scene3D, RefusesABadMeshNamingTheKeyAndTheFile) {
+  const auto dir = testing::fresh_directory("mesh_refusals");
+  // An L-shaped prism: closed and outward, but not convex.
+  rigid::TriangleSurface ell = rigid::prism_surface({{0, 0}, {0.04, 0}, {0.04, 0.02}, {0.02, 0.02}, {0.02, 0.04}, {0, 0.04}},
+                                                    0.02, rigid::Vec3(0.03, 0.03, 0.05));
+  // prism_surface fans its caps from the first corner, which is wrong for a concave outline: the L's caps by hand.
+  ell.triangles.resize(0);
+  const int n = 6;
+  const std::array<std::array<int, 3>, 4> cap{{{0, 2, 1}, {0, 3, 2}, {0, 5, 3}, {3, 5, 4}}};
+  for (const auto& t : cap) {
+    ell.triangles.push_back({t[0], t[1], t[2]});
+    ell.triangles.push_back({n + t[0], n + t[2], n + t[1]});
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    ell.triangles.push_back({i, j, n + j});
+    ell.triangles.push_back({i, n + j, n + i});
+  }
+  testing::write_obj(dir / "ell.obj", ell);
+  rigid::TriangleSurface open_box = rigid::box_surface(rigid::Vec3(0.05, 0.05, 0.05), rigid::Vec3::Constant(0.02));
+  open_box.triangles.pop_back();
+  testing::write_obj(dir / "open.obj", open_box);
+  const auto message = [&](const std::string& file) {
+    try {
+      build_scene<3>(load_scene_text(tank_scene("square", "bodies: [{name: b, shape: {type: mesh, file: " + file +
+                                                                "}, density: 600}]\n"), {}), "s", dir);
+    } catch (const SceneError& e) {
+      return e.key_path + ": " + e.what();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(message("ell.obj").find("bodies[0].shape.file"), std::string::npos) << message("ell.obj");
+  EXPECT_NE(message("ell.obj").find("not convex"), std::string::npos) << message("ell.obj");
+  EXPECT_NE(message("open.obj").find("open.obj: it is not closed"), std::string::npos) << message("open.obj");
+  EXPECT_NE(message("none.stl").find("none.stl: no such file"), std::string::npos) << message("none.stl");
 }
 
 }  // namespace
