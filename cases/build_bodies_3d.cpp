@@ -67,21 +67,49 @@ void check_inside_tanks(const SceneBuild<3>& b, const rigid::TriangleSurface& su
 }
 
 // A body cut by a symmetry plane moves as its mirror image does: along the plane, without turning (rotations are
-// locked all three or none). The scene says so: locked holds the plane's normal translation and rx, ry, rz.
-void check_symmetry_locks(const SceneBuild<3>& b, const SolidShape& shape, const rigid::SolidSpec& spec,
-                          const std::string& path) {
+// locked all three or none). The scene says so: locked holds the plane's normal translation and rx, ry, rz; a
+// prescribed body's direction lies in the plane.
+void check_symmetry_locks(const SceneBuild<3>& b, const YAML::Node& bn, const SolidShape& shape,
+                          const rigid::SolidSpec& spec, const std::string& path) {
   if (!shape.cut()) return;
   for (const auto& plane : symmetry_planes(b.r)) {
     const bool on_it = std::any_of(shape.surface.vertices.begin(), shape.surface.vertices.end(), [&](const auto& v) {
       return std::abs(plane.normal.dot(Vec<3>(v)) - plane.offset) <= 1e-9 * b.dp;
     });
     if (!on_it) continue;
+    if (spec.kinematic) {
+      const Vec<3> d = vec_of<3>(bn["prescribed"]["direction"]);
+      if (std::abs(plane.normal.dot(d)) > 1e-12 * d.norm())
+        throw SceneError(path + ".prescribed.direction",
+                         fmt::format("the symmetry plane {} cuts this body, which must then move along it", plane.key));
+      continue;
+    }
     const int axis = plane.normal[0] != 0.0 ? 0 : 1;
     if (!spec.locked[axis] || !spec.locked[3])
       throw SceneError(path + ".locked", fmt::format("the symmetry plane {} cuts this body, which must then move along "
                                                      "it without turning: lock {} and rx, ry, rz",
                                                      plane.key, "xy"[axis]));
   }
+}
+
+// Free or prescribed (bodies[k].motion); a prescribed body follows the ln cosh law from its centre of mass `start`.
+BodyMotion read_motion(const YAML::Node& bn, const std::string& path, const Vec<3>& start) {
+  BodyMotion motion;
+  motion.mode = BodyMotion::mode_names.parse(bn["motion"].as<std::string>());
+  if (motion.mode == BodyMotion::Mode::free) {
+    if (bn["prescribed"]) throw SceneError(path + ".prescribed", "applies to motion: prescribed only");
+    return motion;
+  }
+  if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
+  if (bn["locked"].size() > 0) throw SceneError(path + ".locked", "applies to free motion only");
+  if (bn["release_time"].as<double>() > 0.0)
+    throw SceneError(path + ".release_time", "applies to free motion only (a prescribed body starts at start_time)");
+  const YAML::Node pr = bn["prescribed"];
+  const Vec<3> direction = vec_of<3>(pr["direction"]);
+  if (!(direction.norm() > 0.0)) throw SceneError(path + ".prescribed.direction", "must not be zero");
+  motion.prescribed_3d = rigid::SpatialPrescribedMotion::ln_cosh(
+      start, direction, rigid::LnCoshLaw(pr["s0"].as<double>(), pr["t0"].as<double>(), pr["start_time"].as<double>()));
+  return motion;
 }
 
 // The rigid world, with each tank's floor and sides as static boxes 10 dp thick when bodies collide with the walls.
@@ -164,15 +192,18 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     const SolidShape shape = body_shape(b, bn, path, true);
     const rigid::TriangleSurface& surface = shape.surface;
     check_inside_tanks(b, surface, path);
-    const rigid::SolidSpec spec = solid_spec(bn, shape, path);
-    check_symmetry_locks(b, shape, spec, path);
+    rigid::SolidSpec spec = solid_spec(bn, shape, path);
+    BodyMotion motion = read_motion(bn, path, spec.centre_of_mass);
+    spec.kinematic = motion.mode == BodyMotion::Mode::prescribed;
+    check_symmetry_locks(b, bn, shape, spec, path);
     rigid::SolidSpec collision = spec;
     collision.hull = shape.inset(b.r["rigid"]["collision_margin"].as<double>() * b.dp);
     collision.hull_inset = true;
-    BodyMotion motion;
     motion.release_time = bn["release_time"].as<double>();
     motion.free_while_settling =
         during_settling_names.parse(bn["during_settling"].as<std::string>()) == DuringSettling::free;
+    if (motion.free_while_settling && spec.kinematic)
+      throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
     if (motion.free_while_settling && motion.release_time > 0.0)
       throw SceneError(path + ".during_settling", "free contradicts release_time > 0 (which holds the body)");
     if (motion.free_while_settling && b.initial_state != InitialState::settled)
@@ -190,7 +221,7 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     const Vec<3> c = spec.centre_of_mass;
     BodyReportOf<3> rep;
     rep.name = name;
-    rep.motion = "free";
+    rep.motion = std::string(BodyMotion::mode_names.name(motion.mode));
     rep.area = volume;
     rep.mass = spec.mass;
     rep.inertia = spec.inertia.trace() / 3.0;

@@ -390,8 +390,8 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders and convex meshes, free motion (prescribed motion, "
-      "deformable slides and other shapes are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
+      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders and convex meshes, free motion or the ln cosh law (time series, "
+      "deformable slides and other motions are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"shape",
         S::variant("the body's shape", "type",
@@ -432,6 +432,21 @@ Schema body_schema_3d() {
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
        {"locked", S::list("components held fixed: x, y, z (translations), rx, ry, rz (rotations about the axes)",
                           S::choice("component", {"x", "y", "z", "rx", "ry", "rz"}, std::nullopt))},
+       {"motion",
+        S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows the law in "
+                  "`prescribed` (the fluid's force on it is still reported)",
+                  BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
+       {"prescribed",
+        S::map("prescribed motion (motion: prescribed); 3-D so far: the ln cosh law, the body not turning",
+               {{"type", S::choice("ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) along `direction` (rigid/"
+                                   "ln_cosh_law.hpp; a 3-D time series is not read yet)",
+                                   {std::string(to_string(PrescribedLaw::ln_cosh))},
+                                   std::string(to_string(PrescribedLaw::ln_cosh)))},
+                {"direction", S::vector("direction of travel (made unit)", "", 3, std::nullopt)},
+                {"s0", S::number("length scale s0 = u_t^2 / a0", "m", std::nullopt, 0.0, S::inf, true, false)},
+                {"t0", S::number("time scale t0 = u_t / a0", "s", std::nullopt, 0.0, S::inf, true, false)},
+                {"start_time", S::number("time the motion starts", "s", 0.0, 0.0, S::inf)}},
+               false)},
        {"release_time",
         S::number("the body is held in place until this time while the water settles", "s", 0.0, 0.0, S::inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "

@@ -96,10 +96,13 @@ int RigidBodies<D>::add(const std::string& name, const BodySpecOf<D>& spec, cons
 
 template <int D>
 void RigidBodies<D>::place_particles(Particles<D>& P, double time) {
-  if constexpr (D == 2) {
-    for (std::size_t b = 0; b < size(); ++b)
-      if (motion[b].mode == BodyMotion::Mode::prescribed)
-        world.set_kinematic_state(int(b), motion[b].prescribed->at(settling_ ? 0.0 : time));
+  for (std::size_t b = 0; b < size(); ++b) {
+    if (motion[b].mode != BodyMotion::Mode::prescribed) continue;
+    const double t = settling_ ? 0.0 : time;
+    if constexpr (D == 2)
+      world.set_kinematic_state(int(b), motion[b].prescribed->at(t));
+    else
+      world.set_kinematic_state(int(b), motion[b].prescribed_3d->at(t));
   }
   std::vector<BodyState<D>> s(size());
   std::vector<RigidField<D>> field(size());

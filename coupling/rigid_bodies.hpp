@@ -20,6 +20,7 @@
 #include "fluid/state_stream.hpp"
 #include "fluid/viscosity.hpp"
 #include "rigid/prescribed_motion.hpp"
+#include "rigid/spatial_prescribed_motion.hpp"
 #include "rigid/rigid_world.hpp"
 
 namespace slide {
@@ -63,7 +64,8 @@ struct BodyMotion {
       make_name_table<Mode>(std::pair{Mode::free, "free"}, std::pair{Mode::prescribed, "prescribed"});
   double release_time = 0.0;                        // free bodies are held until then
   bool free_while_settling = false;                 // floats with the water during a settled start (free bodies)
-  std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed
+  std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed, 2-D
+  std::optional<rigid::SpatialPrescribedMotion> prescribed_3d;  // for Mode::prescribed, 3-D
 };
 
 template <int D>

@@ -1,12 +1,14 @@
 #pragma once
-// Prescribed planar motion of a body: a time series or a closed-form law. The velocity returned is the exact time
+// Prescribed planar motion of a body: a time series or a closed-form law (3-D: rigid/spatial_prescribed_motion.hpp). The velocity returned is the exact time
 // derivative of the same position function, so a prescribed body's boundary particles move consistently.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "rigid/ln_cosh_law.hpp"
 #include "rigid/rigid_world.hpp"
 
 namespace slide::rigid {
@@ -41,20 +43,15 @@ class PrescribedMotion {
     return m;
   }
 
-  // Sliding along a straight line from rest (Watts 1998; Grilli & Watts 2005, used for the Enet & Grilli slide):
-  //   s(t) = s0 ln cosh(t / t0),  s'(t) = (s0 / t0) tanh(t / t0),
-  // x(t) = start + s(t) direction (unit), angle constant; t measured from `begin` (at rest before it).
+  // Sliding along a straight line from rest by the ln cosh law (rigid/ln_cosh_law.hpp): x(t) = start + s(t) direction
+  // (unit), angle constant.
   static PrescribedMotion ln_cosh(const Vec2& start, double angle, const Vec2& direction, double s0, double t0,
                                   double begin) {
-    if (!(s0 > 0.0 && t0 > 0.0)) throw std::invalid_argument("ln_cosh needs positive s0 and t0");
     PrescribedMotion m;
-    m.law_ = true;
+    m.law_ = LnCoshLaw(s0, t0, begin);
     m.start_ = start;
     m.angle_ = angle;
     m.direction_ = direction.normalized();
-    m.s0_ = s0;
-    m.t0_ = t0;
-    m.begin_ = begin;
     return m;
   }
 
@@ -64,10 +61,9 @@ class PrescribedMotion {
   PlanarState at(double t) const {
     PlanarState s;
     if (law_) {
-      const double tau = std::max(0.0, t - begin_) / t0_;
-      s.position = start_ + (s0_ * std::log(std::cosh(tau))) * direction_;
+      s.position = start_ + law_->distance(t) * direction_;
       s.angle = angle_;
-      s.velocity = (s0_ / t0_ * std::tanh(tau)) * direction_;
+      s.velocity = law_->speed(t) * direction_;
       return s;
     }
     if (t < samples_.front().time || t > samples_.back().time)
@@ -95,9 +91,9 @@ class PrescribedMotion {
 
  private:
   std::vector<MotionSample> samples_;
-  bool law_ = false;
+  std::optional<LnCoshLaw> law_;
   Vec2 start_ = Vec2::Zero(), direction_ = Vec2::UnitX();
-  double angle_ = 0.0, s0_ = 1.0, t0_ = 1.0, begin_ = 0.0;
+  double angle_ = 0.0;
 };
 
 }  // namespace slide::rigid

@@ -25,7 +25,7 @@ double z_angle(const btQuaternion& q) { return 2.0 * std::atan2(q.z(), q.w()); }
 // The calls a journal records.
 enum class Op {
   add_body = 1, add_static_segment, set_held, set_kinematic_state, translate, set_velocity, apply_force, step,
-  add_solid, add_static_box, translate_3d, set_velocity_3d, apply_force_3d
+  add_solid, add_static_box, translate_3d, set_velocity_3d, apply_force_3d, set_kinematic_state_3d
 };
 
 namespace {
@@ -153,7 +153,7 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   impl_->record(Op::add_solid, {double(spec.locked[0]), double(spec.locked[1]), double(spec.locked[2]),
                                 double(spec.locked[3]), double(spec.locked[4]), double(spec.locked[5]), spec.mass,
                                 spec.friction, spec.restitution, spec.centre_of_mass[0], spec.centre_of_mass[1],
-                                spec.centre_of_mass[2], double(spec.hull_inset)});
+                                spec.centre_of_mass[2], double(spec.hull_inset), double(spec.kinematic)});
   impl_->journal.insert(impl_->journal.end(), spec.inertia.data(), spec.inertia.data() + 9);
   impl_->journal.push_back(double(spec.hull.vertices.size()));
   for (const Vec3& p : spec.hull.vertices) impl_->journal.insert(impl_->journal.end(), {p[0], p[1], p[2]});
@@ -195,8 +195,9 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   start.setBasis(basis);
   b.linear_factor = btVector3(spec.locked[0] ? 0 : 1, spec.locked[1] ? 0 : 1, spec.locked[2] ? 0 : 1);
   b.angular_factor = btVector3(spec.locked[3] ? 0 : 1, spec.locked[4] ? 0 : 1, spec.locked[5] ? 0 : 1);
+  b.spec.kinematic = spec.kinematic;
   impl_->add(std::move(b), start, spec.friction, spec.restitution, btVector3(principal[0], principal[1], principal[2]),
-             false);
+             spec.kinematic);
   return static_cast<int>(impl_->bodies.size() - 1);
 }
 
@@ -317,6 +318,25 @@ void RigidWorld::set_kinematic_state(int i, const PlanarState& s) {
   b.kinematic_state = s;
 }
 
+void RigidWorld::set_kinematic_state(int i, const SpatialState& s) {
+  impl_->record(Op::set_kinematic_state_3d,
+                {double(i), s.position[0], s.position[1], s.position[2], s.orientation.w(), s.orientation.x(),
+                 s.orientation.y(), s.orientation.z(), s.velocity[0], s.velocity[1], s.velocity[2],
+                 s.angular_velocity[0], s.angular_velocity[1], s.angular_velocity[2]});
+  auto& b = impl_->bodies.at(i);
+  if (b.planar || !b.spec.kinematic) throw std::logic_error("a 3-D kinematic state for a dynamic or planar body");
+  // Bullet's frame is the principal axes: its rotation is the one since creation less principal_to_placed.
+  const btQuaternion q(s.orientation.x(), s.orientation.y(), s.orientation.z(), s.orientation.w());
+  btTransform tr;
+  tr.setIdentity();
+  tr.setOrigin(v3(s.position));
+  tr.setRotation(q * b.principal_to_placed.inverse());
+  b.rigid->setWorldTransform(tr);
+  b.motion->setWorldTransform(tr);
+  b.rigid->setLinearVelocity(v3(s.velocity));
+  b.rigid->setAngularVelocity(v3(s.angular_velocity));
+}
+
 namespace {
 void move_by(btRigidBody& rigid, btMotionState& motion, const btVector3& delta) {
   btTransform tr = rigid.getWorldTransform();
@@ -372,6 +392,7 @@ void RigidWorld::apply_force(int i, const Vec2& force, double torque) {
 void RigidWorld::apply_force(int i, const Vec3& force, const Vec3& torque) {
   auto& b = impl_->bodies.at(i);
   if (b.planar) throw std::logic_error("a 3-D force on a planar body");
+  if (b.spec.kinematic) return;
   impl_->record(Op::apply_force_3d, {double(i), force[0], force[1], force[2], torque[0], torque[1], torque[2]});
   b.rigid->applyCentralForce(v3(force));
   b.rigid->applyTorque(v3(torque));
@@ -485,6 +506,7 @@ void RigidWorld::replay(const std::vector<double>& journal) {
         spec.restitution = next();
         spec.centre_of_mass = vec3();
         spec.hull_inset = next() != 0.0;
+        spec.kinematic = next() != 0.0;
         for (int k = 0; k < 9; ++k) spec.inertia.data()[k] = next();
         const auto n = static_cast<std::size_t>(next());
         for (std::size_t k = 0; k < n; ++k) spec.hull.vertices.push_back(vec3());
@@ -500,6 +522,17 @@ void RigidWorld::replay(const std::vector<double>& journal) {
         const Vec3 lo = vec3(), hi = vec3();
         const double friction = next();
         add_static_box(lo, hi, friction, next());
+        break;
+      }
+      case Op::set_kinematic_state_3d: {
+        const int i = static_cast<int>(next());
+        SpatialState st;
+        st.position = vec3();
+        const double w = next(), x = next(), y = next();
+        st.orientation = Quat(w, x, y, next());
+        st.velocity = vec3();
+        st.angular_velocity = vec3();
+        set_kinematic_state(i, st);
         break;
       }
       case Op::translate_3d: {

@@ -50,6 +50,7 @@ struct SolidSpec {
   double friction = 0.0;                // Coulomb coefficient against static ground (which has friction 1)
   double restitution = 0.0;
   std::array<bool, 6> locked{};         // x, y, z, then rotation about x, y, z held fixed
+  bool kinematic = false;               // moved from outside (prescribed motion): collides but is not pushed
   // true: `hull` is already the body's surface moved in by the collision margin (its maker built it so: a sphere's
   // of radius R - margin), taken as it is; false: add_solid moves it in (inset_convex).
   bool hull_inset = false;
@@ -86,6 +87,7 @@ class RigidWorld {
   void set_held(int body, bool held);
   // Kinematic bodies: the pose and velocity for the coming step, from a prescribed law.
   void set_kinematic_state(int body, const PlanarState& s);
+  void set_kinematic_state(int body, const SpatialState& s);
   // Moves a body by delta without changing anything else (set-up only).
   void translate(int body, const Vec2& delta);
   // Sets a dynamic body's velocity (initial conditions).

@@ -102,5 +102,60 @@ bodies:
   EXPECT_LT(worst, 1e-12);
 }
 
+
+// A prescribed box (motion: prescribed, the ln cosh law along a slanted direction) moves through water by its law to
+// round-off, whatever the water pushes (the push is reported, not applied): pose, velocity and every boundary
+// particle's position and velocity, from a scene built as a user writes it.
+TEST(RigidCoupling3D, PrescribedBodyFollowsTheLnCoshLawThroughWater) {
+  const auto dir = fresh_directory("prescribed_3d");
+  write_file(dir / "s.yaml", R"(dimension: 3
+particle_spacing: 0.02
+lattice: square
+end_time: 1
+gravity: [0, 0, -9.81]
+method: {sound_speed: 10, initial_state: lattice}
+fluid:
+  phases: [{name: water, rheology: {viscosity: 0.01}}]
+  regions: [{type: box, min: [0, 0, 0], max: [0.3, 0.3, 0.3]}]
+bodies:
+  - name: slide
+    shape: {type: box, center: [0.15, 0.15, 0.15], size: [0.1, 0.08, 0.06], angles: [0, 15, 0]}
+    density: 2000
+    motion: prescribed
+    prescribed: {type: ln_cosh, direction: [0.9659258, 0, -0.2588190], s0: 0.5, t0: 0.2, start_time: 0.004}
+)");
+  auto scene = cases::build_scene<3>(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto& sim = *scene->simulation;
+  ASSERT_TRUE(sim.bodies());
+  auto& bodies = *sim.bodies();
+  const Vec<3> centre(0.15, 0.15, 0.15), d = Vec<3>(0.9659258, 0.0, -0.2588190).normalized();
+  const auto& P0 = sim.particles();
+  std::vector<std::pair<std::size_t, Vec<3>>> start;  // body particles and where they began
+  for (std::size_t i = 0; i < P0.real_count(); ++i)
+    if (P0.body_of(i) == 0) start.emplace_back(P0.id[i], P0.position[i]);
+  ASSERT_EQ(start.size(), 60u);  // 5 x 4 x 3 grid points, all within the 3 layers
+  double t = 0.0, largest_force = 0.0;
+  for (int k = 0; k < 150; ++k) {
+    auto [dt, limit] = sim.allowed_time_step();
+    ASSERT_FALSE(sim.step(dt, limit).has_value());
+    t += dt;
+    largest_force = std::max(largest_force, bodies.force[0].total().norm());
+  }
+  const rigid::LnCoshLaw law(0.5, 0.2, 0.004);
+  const auto s = bodies.state(0);
+  EXPECT_NEAR((s.position - (centre + law.distance(sim.time()) * d)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((s.velocity - law.speed(sim.time()) * d).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(s.angular_velocity.norm(), 0.0, 1e-15);
+  EXPECT_GT(law.distance(sim.time()), 0.005);  // it has moved a quarter of a spacing at least
+  const auto& P = sim.particles();
+  for (const auto& [id, x0] : start) {
+    std::size_t i = 0;
+    while (P.id[i] != id) ++i;
+    ASSERT_NEAR((P.position[i] - (x0 + law.distance(sim.time()) * d)).norm(), 0.0, 1e-12);
+    ASSERT_NEAR((P.velocity[i] - law.speed(sim.time()) * d).norm(), 0.0, 1e-12);
+  }
+  EXPECT_GT(largest_force, 1.0);  // the water's push (and its weight's buoyancy) is felt and reported
+}
+
 }  // namespace
 }  // namespace slide::testing

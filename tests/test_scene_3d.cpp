@@ -111,7 +111,8 @@ TEST(Scene3D, RefusesBadBodiesNamingTheKey) {
   EXPECT_EQ(refusal_key(with("")), "bodies[0].density");
   EXPECT_EQ(refusal_key(with(", density: 600, locked: [w]")), "bodies[0].locked[0]");
   EXPECT_EQ(refusal_key(with(", density: 600, locked: [ry]")), "bodies[0].locked");
-  EXPECT_EQ(refusal_key(with(", density: 600, motion: prescribed")), "bodies[0].motion");  // not in 3-D yet
+  EXPECT_EQ(refusal_key(with(", density: 600, motion: prescribed")), "bodies[0].prescribed");  // without its law
+  EXPECT_EQ(refusal_key(with(", density: 600, model: deformable")), "bodies[0].model");  // not in 3-D yet
   EXPECT_EQ(refusal_key(with(", density: 600, during_settling: free")), "bodies[0].during_settling");  // no settling
   std::string outside = with(", density: 600");
   outside.replace(outside.find("center: [0.05, 0.05, 0.05]"), 26, "center: [0.09, 0.05, 0.05]");
@@ -202,6 +203,16 @@ TEST(Scene3D, RefusesABodyThatMayLeaveItsSymmetryPlanes) {
             "(accepted)");
   EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [y, rx, ry, rz]")), "bodies[0].locked");
   EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y]")), "bodies[0].locked");
+  // A prescribed body moves along the planes that cut it, and its keys come together.
+  const std::string law = ", mass: 0.2, motion: prescribed, prescribed: {s0: 1, t0: 1, direction: ";
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(law + "[0, 0, -1]}")), "(accepted)");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(law + "[1, 0, -1]}")), "bodies[0].prescribed.direction");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(law + "[0, 0, 0]}")), "bodies[0].prescribed.direction");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(law + "[0, 0, -1]}, locked: [x]")), "bodies[0].locked");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, motion: prescribed")), "bodies[0].prescribed");
+  EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz], prescribed: {s0: 1, t0: 1, "
+                                             "direction: [0, 0, 1]}")),
+            "bodies[0].prescribed");
   EXPECT_EQ(refusal_key(quarter_sphere_scene(", mass: 0.2, locked: [x, y, rx, ry, rz]").replace(
                 quarter_sphere_scene("").find("radius: 0.05"), 12, "radius: 0.0")),
             "bodies[0].shape.radius");
