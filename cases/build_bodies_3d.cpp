@@ -112,12 +112,14 @@ BodyMotion read_motion(const YAML::Node& bn, const std::string& path, const Vec<
   return motion;
 }
 
-// The rigid world, with each tank's floor and sides as static boxes 10 dp thick when bodies collide with the walls.
+// The rigid world, with each tank's floor and sides as static boxes 10 dp thick and each terrain as a static mesh when
+// bodies collide with the walls.
 std::shared_ptr<RigidBodies<3>> make_rigid_world(const SceneBuild<3>& b) {
   auto bodies = std::make_shared<RigidBodies<3>>(b.sim->options.gravity,
                                                  b.r["rigid"]["collision_margin"].as<double>() * b.dp);
   if (!b.r["rigid"]["wall_contact"].as<bool>()) return bodies;
   const double t = 10.0 * b.dp;
+  for (const auto& terrain : b.terrains) bodies->world.add_static_mesh(terrain.surface, 1.0, 1.0);
   const auto planes = symmetry_planes(b.r);
   for (const auto& [lo, hi] : b.tanks) {
     const Vec<3> outer_lo = lo - Vec<3>::Constant(t);

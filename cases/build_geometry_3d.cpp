@@ -7,7 +7,9 @@
 #include <set>
 #include <tuple>
 
+#include "cases/height_grid.hpp"
 #include "cases/scene_build.hpp"
+#include "cases/surface_layers.hpp"
 #include "fluid/box_walls.hpp"
 
 namespace slide::cases {
@@ -48,6 +50,50 @@ void check_on_the_cubic_lattice(const Vec<3>& lo, const Vec<3>& hi, double dp, s
                                    dp, "xyz"[a], off(lo[a]) ? lo[a] : hi[a], (off(lo[a]) ? lo[a] : hi[a]) / dp));
 }
 
+// A terrain's grid (walls[w].file), refused naming the key, the file and what is wrong with it.
+HeightGrid terrain_grid(const SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
+  const std::filesystem::path file = b.scene_dir / wn["file"].as<std::string>();
+  try {
+    return read_height_grid(file);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(fmt::format("walls[{}].file", w), fmt::format("{}: {}", file.string(), e.what()));
+  }
+}
+
+// A terrain (walls[w], type: terrain): its grid read from the scene's folder, its surface, and its boundary particles
+// in layers below the surface (cases/surface_layers.hpp), to the kernel's reach.
+void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
+  typename SceneBuild<3>::Terrain t;
+  t.grid = terrain_grid(b, wn, w);
+  t.surface = terrain_surface(t.grid);
+  t.distance = std::make_shared<const mesh::MeshDistance>(t.surface, false);
+  const HeightGrid& g = t.grid;
+  const auto below = [&g](const Vec<3>& p) { return p[2] < terrain_height(g, p[0], p[1]); };
+  const auto pts = surface_layers(t.surface, *t.distance, below, b.dp, boundary_layers(b.sim->options.re_over_dp));
+  Particles<3>& P = b.particles();
+  const auto& first_phase = b.phases.phases[0];
+  for (const auto& bp : pts) {
+    if (!b.in_period(bp.position[0])) continue;
+    const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
+                                first_phase.viscosity);
+    P.wall_normal[i] = bp.normal;
+    P.wall_depth[i] = bp.depth;
+    b.boundary_owner.push_back(fmt::format("walls[{}]", w));
+  }
+  b.terrains.push_back(std::move(t));
+}
+
+// Whether water may stand at p as far as the terrains go: above each one it covers, a quarter spacing clear of its
+// surface (its wall layer lies dp/2 below it, and water keeps 0.75 dp from boundary particles: check_overlaps).
+bool clear_of_terrains(const SceneBuild<3>& b, const Vec<3>& p) {
+  for (const auto& t : b.terrains) {
+    const double h = terrain_height(t.grid, p[0], p[1]);
+    if (std::isnan(h)) continue;
+    if (p[2] < h || t.distance->distance(p) < 0.25 * b.dp) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 // Boundary particles of the first phase's density, as in 2-D; a point already placed by an earlier wall (where two
@@ -58,6 +104,10 @@ void build_walls(SceneBuild<3>& b) {
   std::set<std::tuple<long, long, long>> placed;
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];
+    if (wn["type"].as<std::string>() == "terrain") {
+      build_terrain(b, wn, w);
+      continue;
+    }
     const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
     if (b.sim->options.lattice == LatticeKind::square) check_on_the_cubic_lattice(lo, hi, b.dp, w);
     // Sides of symmetry have no particles: the mirror images of what stands near them take their place.
@@ -100,7 +150,7 @@ void fill_fluid_regions(SceneBuild<3>& b) {
     const auto& phase = b.phases.phases[ph];
     std::size_t added = 0;
     auto take = [&](const Vec<3>& p, bool inside) {
-      if (!inside || !b.in_period(p[0]) || body_near(b, p) >= 0) return;
+      if (!inside || !b.in_period(p[0]) || body_near(b, p) >= 0 || !clear_of_terrains(b, p)) return;
       P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
       b.fluid_owner.push_back(path);
       ++added;
@@ -153,7 +203,17 @@ double estimated_particles(const SceneBuild<3>& b) {
       level = std::max(level, rn["level"].as<double>());
     }
   }
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {  // a terrain: its surface's area times its layers
+    const auto wn = b.r["walls"][w];
+    if (wn["type"].as<std::string>() != "terrain") continue;
+    const rigid::TriangleSurface s = terrain_surface(terrain_grid(b, wn, w));
+    double area = 0.0;
+    for (const auto& t : s.triangles)
+      area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+    n += area * boundary_layers(b.sim->options.re_over_dp) / (dp * dp);
+  }
   for (const auto& wn : b.r["walls"]) {
+    if (wn["type"].as<std::string>() != "tank") continue;
     const Vec<3> size = (vec_of<3>(wn["max"]) - vec_of<3>(wn["min"])).cwiseMax(0.0);
     const long layers_key = wn["layers"].as<long>();
     const double t = dp * (layers_key == 0 ? boundary_layers(b.sim->options.re_over_dp) : layers_key);

@@ -81,7 +81,7 @@ void check_lattice_choices(SceneBuild<D>& b) {
                                                          "lattice: square",
                                                          lattice));
   for (std::size_t w = 0; w < r["walls"].size(); ++w)
-    if (r["walls"][w]["layers"].as<long>() != 0)
+    if (r["walls"][w]["layers"] && r["walls"][w]["layers"].as<long>() != 0)
       throw SceneError(fmt::format("walls[{}].layers", w),
                        fmt::format("with lattice: {} walls are cut from the lattice to the depth re; leave layers at 0",
                                    lattice));

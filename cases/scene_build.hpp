@@ -13,12 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "cases/height_grid.hpp"
 #include "cases/initial_state.hpp"
 #include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
 #include "cases/scene_geometry.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/periodic.hpp"
+#include "mesh/mesh_distance.hpp"
 
 namespace slide::cases {
 
@@ -73,6 +75,13 @@ struct SceneBuild {
   std::vector<FaceSegment> faces;
   std::vector<std::string> boundary_owner;
   std::vector<std::array<Vec<D>, 2>> tanks;  // 3-D: the tanks' insides (min, max), for below_level regions
+  // 3-D: the terrains (walls[].type: terrain): their grid, surface (facing up) and distance.
+  struct Terrain {
+    HeightGrid grid;
+    rigid::TriangleSurface surface;
+    std::shared_ptr<const mesh::MeshDistance> distance;
+  };
+  std::vector<Terrain> terrains;
   std::vector<std::uint32_t> gate_ids;  // the particles of gates (walls[].gate), taken away at t = 0
   // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0), and the
   // deformable slides (filled with their phase's particles by fill_fluid_regions).

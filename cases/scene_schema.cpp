@@ -363,7 +363,17 @@ Schema wall_schema_3d() {
                                              "within the kernel's reach of them gets its mirror image beyond "
                                              "(fluid/ghosts.hpp), which makes them free-slip; a body they cut is its "
                                              "part on this side, and moves along them without turning",
-                                             S::choice("side", {"x_min", "x_max", "y_min", "y_max"}, std::nullopt))}})}});
+                                             S::choice("side", {"x_min", "x_max", "y_min", "y_max"}, std::nullopt))}})},
+       {"terrain",
+        S::map("a terrain or bathymetry: a surface z = h(x, y) from a grid of elevations, each cell two triangles split "
+               "along its diagonal from (x_i, y_j) to (x_i+1, y_j+1) (cases/height_grid.hpp), with wall and dummy "
+               "layers below it to the kernel's reach, its particles spread evenly along it (cases/surface_layers.hpp); "
+               "water (below_level, box) stands only above it, a quarter spacing clear; bodies collide with it. Put it "
+               "inside a tank, whose sides hold the water around it",
+               {{"name", S::text("name used in messages", "")},
+                {"file", S::text("the grid, relative to the scene's folder: a .csv (header y\\x,x_0,x_1,..., then a "
+                                 "row y_j,z_0j,z_1j,... per y) or an ESRI ASCII grid (.asc)",
+                                 std::nullopt)}})}});
 }
 
 Schema gauge_schema_3d() {

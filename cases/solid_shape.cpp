@@ -9,8 +9,8 @@
 
 #include "cases/scene_geometry.hpp"
 #include "cases/schema.hpp"
+#include "cases/surface_layers.hpp"
 #include "mesh/closed_mesh.hpp"
-#include "mesh/even_surface_samples.hpp"
 #include "mesh/mesh_distance.hpp"
 
 namespace slide::cases {
@@ -126,28 +126,6 @@ double box_signed_distance(const Vec<3>& p, const Vec<3>& centre, const Vec<3>& 
   return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
 }
 
-// Boundary points of a closed mesh: its surface spread evenly with one point per dp^2 (mesh/even_surface_samples.hpp),
-// layer l those points moved in along their face's inward normal by (l + 1/2) dp. Near an edge a point so moved may
-// come nearer another face: it is kept while its distance to the surface is within dp/4 of its layer's depth (at a
-// convex edge the two faces' points so meet near the bisector; a thin part keeps the layers it has room for). Its
-// normal points to the surface's nearest point and its depth is its distance to it, as at a box's edges.
-std::vector<BoundaryPointOf<3>> mesh_points(const rigid::TriangleSurface& surface, const mesh::MeshDistance& distance,
-                                            double dp, int layers) {
-  if (layers <= 0) return {};
-  const auto samples = mesh::even_surface_samples(surface, dp);
-  std::vector<BoundaryPointOf<3>> out;
-  for (int l = 0; l < layers; ++l) {
-    const double depth = (l + 0.5) * dp;
-    for (const auto& sample : samples) {
-      const Vec<3> p = sample.point - depth * rigid::outward_normal(surface, surface.triangles[std::size_t(sample.triangle)]);
-      const double d = -distance.signed_distance(p);
-      if (d < depth - 0.25 * dp || d > depth + 0.25 * dp) continue;
-      out.push_back({p, Vec<3>((distance.nearest_point(p) - p).normalized()), d, l});
-    }
-  }
-  return out;
-}
-
 // The surface in bodies[k].shape.file, placed: a file point x goes to position + R (scale x). Throws SceneError naming
 // the key, the file and its defect.
 rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& path, const std::filesystem::path& scene_dir,
@@ -220,7 +198,8 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     s.surface = placed_mesh(shape, path, scene_dir, s.axes);
     const auto distance = std::make_shared<const mesh::MeshDistance>(s.surface);
     s.signed_distance = [distance](const Vec<3>& p) { return distance->signed_distance(p); };
-    s.points = mesh_points(s.surface, *distance, dp, layers);
+    s.points = surface_layers(s.surface, *distance, [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; },
+                              dp, layers);
     s.inset = [whole = s.surface, path](double margin) {
       rigid::TriangleSurface hull = whole;
       try {

@@ -7,6 +7,7 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "mesh/cgal_kernel.hpp"
 
@@ -21,7 +22,7 @@ struct MeshDistance::Tree {
   std::unique_ptr<CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>> side;
 };
 
-MeshDistance::MeshDistance(const rigid::TriangleSurface& s) : tree_(std::make_unique<Tree>()) {
+MeshDistance::MeshDistance(const rigid::TriangleSurface& s, bool closed) : tree_(std::make_unique<Tree>()) {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> faces;
   to_soup(s, points, faces);
@@ -30,14 +31,19 @@ MeshDistance::MeshDistance(const rigid::TriangleSurface& s) : tree_(std::make_un
   tree_->tree.insert(faces_of_mesh.first, faces_of_mesh.second, tree_->mesh);
   tree_->tree.build();
   tree_->tree.accelerate_distance_queries();
-  tree_->side = std::make_unique<CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>>(tree_->tree);
+  if (closed) tree_->side = std::make_unique<CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>>(tree_->tree);
 }
 
 MeshDistance::~MeshDistance() = default;
 MeshDistance::MeshDistance(MeshDistance&&) noexcept = default;
 MeshDistance& MeshDistance::operator=(MeshDistance&&) noexcept = default;
 
+double MeshDistance::distance(const rigid::Vec3& p) const {
+  return std::sqrt(CGAL::to_double(tree_->tree.squared_distance(Point(p[0], p[1], p[2]))));
+}
+
 double MeshDistance::signed_distance(const rigid::Vec3& p) const {
+  if (!tree_->side) throw std::logic_error("the signed distance to an open surface");
   const Point q(p[0], p[1], p[2]);
   const double d = std::sqrt(CGAL::to_double(tree_->tree.squared_distance(q)));
   const CGAL::Bounded_side side = (*tree_->side)(q);

@@ -1,7 +1,7 @@
 #pragma once
-// The signed distance to a closed triangle mesh (negative inside) and its nearest point: CGAL's AABB tree of the
-// triangles for the distance, and its ray-parity test on exact predicates (Side_of_triangle_mesh) for the side. Both
-// are built once; queries are const and may run on several threads.
+// The distance to a triangle surface and its nearest point (CGAL's AABB tree of the triangles), and for a closed one
+// the signed distance, negative inside (CGAL's ray-parity test on exact predicates, Side_of_triangle_mesh, for the
+// side). Built once; queries are const and may run on several threads.
 #include <memory>
 
 #include "rigid/polyhedron.hpp"
@@ -10,13 +10,15 @@ namespace slide::mesh {
 
 class MeshDistance {
  public:
-  // `surface` must be closed and outward (check_closed_mesh).
-  explicit MeshDistance(const rigid::TriangleSurface& surface);
+  // With `closed`, `surface` must be closed and outward (check_closed_mesh); an open one (a terrain) has no inside.
+  explicit MeshDistance(const rigid::TriangleSurface& surface, bool closed = true);
   ~MeshDistance();
   MeshDistance(MeshDistance&&) noexcept;
   MeshDistance& operator=(MeshDistance&&) noexcept;
 
-  // m from the surface, < 0 inside, 0 on it.
+  // m from the surface.
+  double distance(const rigid::Vec3& p) const;
+  // m from the surface, < 0 inside, 0 on it (closed surfaces only: std::logic_error otherwise).
   double signed_distance(const rigid::Vec3& p) const;
   // The point of the surface nearest to p.
   rigid::Vec3 nearest_point(const rigid::Vec3& p) const;

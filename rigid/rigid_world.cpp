@@ -25,7 +25,7 @@ double z_angle(const btQuaternion& q) { return 2.0 * std::atan2(q.z(), q.w()); }
 // The calls a journal records.
 enum class Op {
   add_body = 1, add_static_segment, set_held, set_kinematic_state, translate, set_velocity, apply_force, step,
-  add_solid, add_static_box, translate_3d, set_velocity_3d, apply_force_3d, set_kinematic_state_3d
+  add_solid, add_static_box, translate_3d, set_velocity_3d, apply_force_3d, set_kinematic_state_3d, add_static_mesh
 };
 
 namespace {
@@ -76,7 +76,8 @@ struct RigidWorld::Impl {
     journal.push_back(static_cast<double>(op));
     journal.insert(journal.end(), args);
   }
-  std::vector<std::unique_ptr<btBoxShape>> ground_shapes;
+  std::vector<std::unique_ptr<btCollisionShape>> ground_shapes;
+  std::vector<std::unique_ptr<btTriangleMesh>> ground_meshes;  // the triangles a static mesh shape refers to
   std::vector<std::unique_ptr<btRigidBody>> ground;
 
   Impl(const Vec3& g, double m) : margin(m), gravity(g) { world.setGravity(v3(g)); }
@@ -214,6 +215,28 @@ void RigidWorld::add_static_box(const Vec3& lo, const Vec3& hi, double friction,
   info.m_restitution = restitution;
   auto body = std::make_unique<btRigidBody>(info);
   impl_->world.addRigidBody(body.get());
+  impl_->ground_shapes.push_back(std::move(shape));
+  impl_->ground.push_back(std::move(body));
+}
+
+void RigidWorld::add_static_mesh(const TriangleSurface& surface, double friction, double restitution) {
+  impl_->record(Op::add_static_mesh, {friction, restitution, double(surface.vertices.size())});
+  for (const Vec3& p : surface.vertices) impl_->journal.insert(impl_->journal.end(), {p[0], p[1], p[2]});
+  impl_->journal.push_back(double(surface.triangles.size()));
+  for (const auto& t : surface.triangles) impl_->journal.insert(impl_->journal.end(), {double(t[0]), double(t[1]), double(t[2])});
+  if (surface.triangles.empty()) throw std::invalid_argument("a static mesh needs triangles");
+  auto mesh = std::make_unique<btTriangleMesh>();
+  for (const auto& t : surface.triangles)
+    mesh->addTriangle(v3(surface.vertices[t[0]]), v3(surface.vertices[t[1]]), v3(surface.vertices[t[2]]));
+  auto shape = std::make_unique<btBvhTriangleMeshShape>(mesh.get(), true);
+  shape->setMargin(impl_->margin);
+  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape.get());
+  info.m_startWorldTransform.setIdentity();
+  info.m_friction = friction;
+  info.m_restitution = restitution;
+  auto body = std::make_unique<btRigidBody>(info);
+  impl_->world.addRigidBody(body.get());
+  impl_->ground_meshes.push_back(std::move(mesh));
   impl_->ground_shapes.push_back(std::move(shape));
   impl_->ground.push_back(std::move(body));
 }
@@ -516,6 +539,19 @@ void RigidWorld::replay(const std::vector<double>& journal) {
           spec.hull.triangles.push_back({a, b, static_cast<int>(next())});
         }
         add_solid(spec);
+        break;
+      }
+      case Op::add_static_mesh: {
+        const double friction = next(), restitution = next();
+        TriangleSurface surface;
+        const auto n = static_cast<std::size_t>(next());
+        for (std::size_t k = 0; k < n; ++k) surface.vertices.push_back(vec3());
+        const auto m = static_cast<std::size_t>(next());
+        for (std::size_t k = 0; k < m; ++k) {
+          const int a = static_cast<int>(next()), b = static_cast<int>(next());
+          surface.triangles.push_back({a, b, static_cast<int>(next())});
+        }
+        add_static_mesh(surface, friction, restitution);
         break;
       }
       case Op::add_static_box: {

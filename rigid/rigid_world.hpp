@@ -3,7 +3,8 @@
 // sees Bullet. Two kinds of body share it:
 //  * planar (2-D scenes): convex polygons extruded one metre in z, constrained to the x-y plane (linear factor 1,1,0;
 //    angular factor 0,0,1), so mass and inertia are per unit width; static ground is made of segments;
-//  * solid (3-D scenes): convex hulls in six degrees of freedom with their inertia tensor; static ground is boxes.
+//  * solid (3-D scenes): convex hulls in six degrees of freedom with their inertia tensor; static ground is boxes and
+//    triangle meshes (terrains).
 #include <Eigen/Geometry>
 #include <array>
 #include <memory>
@@ -76,6 +77,9 @@ class RigidWorld {
   int add_solid(const SolidSpec& spec);
   // Static ground in 3-D: the box [lo, hi] (axis-aligned).
   void add_static_box(const Vec3& lo, const Vec3& hi, double friction, double restitution);
+  // Static ground in 3-D: a triangle surface, open or closed (a terrain), as Bullet's btBvhTriangleMeshShape (for
+  // bodies that do not move: DESIGN.md).
+  void add_static_mesh(const TriangleSurface& surface, double friction, double restitution);
 
   std::size_t size() const;
   PlanarState state(int body) const;
