@@ -9,7 +9,7 @@
 
 #include "cases/height_grid.hpp"
 #include "cases/scene_build.hpp"
-#include "cases/surface_layers.hpp"
+#include "cases/terrain_layers.hpp"
 #include "fluid/box_walls.hpp"
 
 namespace slide::cases {
@@ -61,15 +61,14 @@ HeightGrid terrain_grid(const SceneBuild<3>& b, const YAML::Node& wn, std::size_
 }
 
 // A terrain (walls[w], type: terrain): its grid read from the scene's folder, its surface, and its boundary particles
-// in layers below the surface (cases/surface_layers.hpp), to the kernel's reach.
+// in layers laid along it below the surface (cases/terrain_layers.hpp), to the kernel's reach.
 void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
   typename SceneBuild<3>::Terrain t;
   t.grid = terrain_grid(b, wn, w);
   t.surface = terrain_surface(t.grid);
   t.distance = std::make_shared<const mesh::MeshDistance>(t.surface, false);
-  const HeightGrid& g = t.grid;
-  const auto below = [&g](const Vec<3>& p) { return p[2] < terrain_height(g, p[0], p[1]); };
-  const auto pts = surface_layers(t.surface, *t.distance, below, b.dp, boundary_layers(b.sim->options.re_over_dp));
+  const auto pts = terrain_layers(t.grid, t.surface, *t.distance, b.sim->options.lattice, b.dp,
+                                  boundary_layers(b.sim->options.re_over_dp));
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
   for (const auto& bp : pts) {
@@ -83,13 +82,14 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
   b.terrains.push_back(std::move(t));
 }
 
-// Whether water may stand at p as far as the terrains go: above each one it covers, a quarter spacing clear of its
-// surface (its wall layer lies dp/2 below it, and water keeps 0.75 dp from boundary particles: check_overlaps).
+// Whether water may stand at p as far as the terrains go: above each one it covers, half a layer spacing clear of its
+// surface (cases/terrain_layers.hpp).
 bool clear_of_terrains(const SceneBuild<3>& b, const Vec<3>& p) {
+  const double clearance = terrain_clearance(b.sim->options.lattice, b.dp) - 1e-9 * b.dp;
   for (const auto& t : b.terrains) {
     const double h = terrain_height(t.grid, p[0], p[1]);
     if (std::isnan(h)) continue;
-    if (p[2] < h || t.distance->distance(p) < 0.25 * b.dp) return false;
+    if (p[2] < h || t.distance->distance(p) < clearance) return false;
   }
   return true;
 }

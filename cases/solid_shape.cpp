@@ -11,6 +11,7 @@
 #include "cases/schema.hpp"
 #include "cases/surface_layers.hpp"
 #include "mesh/closed_mesh.hpp"
+#include "mesh/convex_inset.hpp"
 #include "mesh/mesh_distance.hpp"
 
 namespace slide::cases {
@@ -201,13 +202,11 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     s.points = surface_layers(s.surface, *distance, [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; },
                               dp, layers);
     s.inset = [whole = s.surface, path](double margin) {
-      rigid::TriangleSurface hull = whole;
       try {
-        hull.vertices = rigid::inset_convex(whole, margin);
+        return mesh::convex_inset(whole, margin);
       } catch (const std::invalid_argument&) {
         throw SceneError(path + ".shape", "too thin for the collision margin");
       }
-      return hull;
     };
   } else if (type == "sphere") {
     const double radius = shape["radius"].as<double>();

@@ -8,11 +8,10 @@ namespace slide::cases {
 std::vector<BoundaryPointOf<3>> surface_layers(const rigid::TriangleSurface& surface, const mesh::MeshDistance& distance,
                                                const std::function<bool(const Vec<3>&)>& solid_side, double dp,
                                                int layers) {
-  if (layers <= 0) return {};
-  const auto samples = mesh::even_surface_samples(surface, dp);
   std::vector<BoundaryPointOf<3>> out;
   for (int l = 0; l < layers; ++l) {
     const double depth = (l + 0.5) * dp;
+    const auto samples = mesh::even_surface_samples(surface, dp, 20071215 + static_cast<unsigned long>(l));
     for (const auto& sample : samples) {
       const auto& t = surface.triangles[std::size_t(sample.triangle)];
       const Vec<3> p = sample.point - depth * rigid::outward_normal(surface, t);

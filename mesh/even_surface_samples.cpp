@@ -22,8 +22,8 @@ double unit(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 // cumulative area (stratified, so that each triangle has its expected number to within one), each at a uniform place
 // in it (a = 1 - sqrt(r1), b = sqrt(r1) (1 - r2), c = sqrt(r1) r2).
 std::vector<SurfaceSample> candidates(const rigid::TriangleSurface& s, const std::vector<double>& areas, double total,
-                                      long count) {
-  std::mt19937_64 rng(20071215);  // any fixed seed
+                                      long count, unsigned long seed) {
+  std::mt19937_64 rng(seed);
   std::vector<SurfaceSample> out;
   out.reserve(std::size_t(count) + s.triangles.size());
   double before = 0.0;
@@ -77,7 +77,7 @@ std::vector<std::vector<std::pair<int, double>>> close_pairs(const std::vector<S
 // of N points in a hexagonal packing); each pair closer than 2 r_max weighs w = (1 - d' / (2 r_max))^8 with
 // d' = max(d, r_min), r_min = r_max (1 - (N / M)^1.5) 0.65; the candidate with the largest total weight goes, its
 // weight leaves its neighbours' totals, until N are left. Ties go to the lower index, so the result is fixed.
-std::vector<SurfaceSample> even_surface_samples(const rigid::TriangleSurface& s, double spacing) {
+std::vector<SurfaceSample> even_surface_samples(const rigid::TriangleSurface& s, double spacing, unsigned long seed) {
   std::vector<double> areas;
   double total = 0.0;
   for (const auto& t : s.triangles) {
@@ -87,7 +87,7 @@ std::vector<SurfaceSample> even_surface_samples(const rigid::TriangleSurface& s,
   if (!(total > 0.0) || !(spacing > 0.0)) return {};
   const long wanted = std::max(1L, std::lround(total / (spacing * spacing)));
   const long oversampling = 8;
-  const std::vector<SurfaceSample> p = candidates(s, areas, total, oversampling * wanted);
+  const std::vector<SurfaceSample> p = candidates(s, areas, total, oversampling * wanted, seed);
   if (long(p.size()) <= wanted) return p;
   const double r_max = std::sqrt(total / (2.0 * std::sqrt(3.0) * double(wanted)));
   const double r_min = r_max * (1.0 - std::pow(double(wanted) / double(p.size()), 1.5)) * 0.65;

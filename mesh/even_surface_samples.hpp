@@ -16,7 +16,9 @@ struct SurfaceSample {
   bool operator==(const SurfaceSample&) const = default;
 };
 
-// round(area / spacing^2) points (at least one per surface with any area) on the surface's triangles.
-std::vector<SurfaceSample> even_surface_samples(const rigid::TriangleSurface& surface, double spacing);
+// round(area / spacing^2) points (at least one per surface with any area) on the surface's triangles. Another `seed`
+// gives another such set (layers behind a surface each take their own, so that their gaps do not line up).
+std::vector<SurfaceSample> even_surface_samples(const rigid::TriangleSurface& surface, double spacing,
+                                                unsigned long seed = 20071215);
 
 }  // namespace slide::mesh

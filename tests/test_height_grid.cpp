@@ -81,9 +81,9 @@ TEST(HeightGrid, RefusesWhatIsWrongSayingWhere) {
   EXPECT_NE(what("f.txt", "").find(".csv or .asc"), std::string::npos);
 }
 
-// A 15 degree slope (z = 0.02 + tan(15) x) across a 0.3 m x 0.1 m tank, water to 0.1 m above it: the terrain's
-// particles lie below its surface at their depth, its wall layer half a spacing down, one point per dp^2 of its area;
-// the water stands above it, a quarter spacing clear.
+// A 15 degree slope (z = 0.02 + tan(15) x) across a 0.3 m x 0.1 m tank, water to 0.1 m above it (fcc): the terrain's
+// particles lie below its surface at their depth, its wall layer half a (111) plane spacing h = 0.9165 dp down, one
+// point per column and row of its lattice (cases/terrain_layers.hpp); the water stands above it, h/2 clear.
 TEST(Terrain3D, SlopeHoldsItsLayersBelowAndTheWaterAbove) {
   const auto dir = testing::fresh_directory("terrain_slope");
   const double slope = std::tan(15.0 * M_PI / 180.0);
@@ -103,13 +103,14 @@ walls:
   const auto& P = scene->simulation->particles();
   const auto height = [&](const Vec<3>& p) { return 0.02 + slope * p[0]; };
   const double cos15 = std::cos(15.0 * M_PI / 180.0);
+  const double h = std::sqrt(2.0) * std::pow(2.0, -1.0 / 3.0) * 0.01 * std::sqrt(2.0 / 3.0);  // fcc (111) spacing
   std::size_t wall_layer = 0, fluid = 0;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     const Vec<3>& p = P.position[i];
     const double above = (p[2] - height(p)) * cos15;  // distance from the slope's plane, + above
     if (P.kind[i] == Kind::fluid) {
       ++fluid;
-      EXPECT_GE(above, 0.25 * 0.01 - 1e-12) << p.transpose();
+      EXPECT_GE(above, 0.5 * h - 1e-9) << p.transpose();
       continue;
     }
     if (p[0] <= 0.0 || p[0] >= 0.3 || p[1] <= 0.0 || p[1] >= 0.1 || p[2] <= 0.0) continue;  // the tank's own
@@ -120,10 +121,14 @@ walls:
     }
     if (P.kind[i] != Kind::wall) continue;
     ++wall_layer;
-    EXPECT_NEAR(-above, 0.005, 0.0025 + 1e-12);
+    EXPECT_NEAR(-above, 0.5 * h, 1e-12);
   }
-  const double area = 0.3 / cos15 * 0.1;
-  EXPECT_NEAR(double(wall_layer), area / 1e-4, 0.1 * area / 1e-4);
+  // Whole numbers of columns and rows across the grid at the spacing a sqrt(cos 15) (a = 1.1225 dp): 27 columns of
+  // 0.3 m over 1.103 dp, 10 rows of 0.1 m over 0.955 dp; one point each in the wall layer.
+  const double spacing = h * std::sqrt(1.5) * std::sqrt(cos15);
+  const long columns = std::lround(0.3 / spacing), rows = std::lround(0.1 / (0.5 * std::sqrt(3.0) * spacing));
+  EXPECT_EQ(columns * rows, 270);
+  EXPECT_EQ(long(wall_layer), columns * rows);
   EXPECT_GT(fluid, 1000u);
 }
 
