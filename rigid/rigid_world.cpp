@@ -76,11 +76,24 @@ struct RigidWorld::Impl {
     journal.push_back(static_cast<double>(op));
     journal.insert(journal.end(), args);
   }
+  std::vector<std::unique_ptr<btTriangleMesh>> ground_meshes;  // the triangles a static mesh shape refers to (kept
+                                                               // until after the shapes, declared later, are gone)
   std::vector<std::unique_ptr<btCollisionShape>> ground_shapes;
-  std::vector<std::unique_ptr<btTriangleMesh>> ground_meshes;  // the triangles a static mesh shape refers to
   std::vector<std::unique_ptr<btRigidBody>> ground;
 
   Impl(const Vec3& g, double m) : margin(m), gravity(g) { world.setGravity(v3(g)); }
+  // Static ground: `shape` placed at `where`, added to the world and kept.
+  void add_ground(std::unique_ptr<btCollisionShape> shape, const btTransform& where, double friction,
+                  double restitution) {
+    btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape.get());
+    info.m_startWorldTransform = where;
+    info.m_friction = friction;
+    info.m_restitution = restitution;
+    auto body = std::make_unique<btRigidBody>(info);
+    world.addRigidBody(body.get());
+    ground_shapes.push_back(std::move(shape));
+    ground.push_back(std::move(body));
+  }
   // The body's rigid object from its shape, start transform, mass and principal inertia; added to the world.
   void add(Body&& b, const btTransform& start, double friction, double restitution, const btVector3& inertia,
            bool kinematic);
@@ -208,15 +221,10 @@ void RigidWorld::add_static_box(const Vec3& lo, const Vec3& hi, double friction,
   if (!(half.minCoeff() > 0.0)) throw std::invalid_argument("a static box needs a positive size");
   auto shape = std::make_unique<btBoxShape>(v3(half));
   shape->setMargin(std::min(impl_->margin, 0.25 * half.minCoeff()));
-  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape.get());
-  info.m_startWorldTransform.setIdentity();
-  info.m_startWorldTransform.setOrigin(v3(Vec3(0.5 * (lo + hi))));
-  info.m_friction = friction;
-  info.m_restitution = restitution;
-  auto body = std::make_unique<btRigidBody>(info);
-  impl_->world.addRigidBody(body.get());
-  impl_->ground_shapes.push_back(std::move(shape));
-  impl_->ground.push_back(std::move(body));
+  btTransform where;
+  where.setIdentity();
+  where.setOrigin(v3(Vec3(0.5 * (lo + hi))));
+  impl_->add_ground(std::move(shape), where, friction, restitution);
 }
 
 void RigidWorld::add_static_mesh(const TriangleSurface& surface, double friction, double restitution) {
@@ -230,15 +238,10 @@ void RigidWorld::add_static_mesh(const TriangleSurface& surface, double friction
     mesh->addTriangle(v3(surface.vertices[t[0]]), v3(surface.vertices[t[1]]), v3(surface.vertices[t[2]]));
   auto shape = std::make_unique<btBvhTriangleMeshShape>(mesh.get(), true);
   shape->setMargin(impl_->margin);
-  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape.get());
-  info.m_startWorldTransform.setIdentity();
-  info.m_friction = friction;
-  info.m_restitution = restitution;
-  auto body = std::make_unique<btRigidBody>(info);
-  impl_->world.addRigidBody(body.get());
   impl_->ground_meshes.push_back(std::move(mesh));
-  impl_->ground_shapes.push_back(std::move(shape));
-  impl_->ground.push_back(std::move(body));
+  btTransform where;
+  where.setIdentity();
+  impl_->add_ground(std::move(shape), where, friction, restitution);
 }
 
 void RigidWorld::add_static_segment(const Vec2& a, const Vec2& b, const Vec2& into_solid, double thickness,
@@ -257,14 +260,7 @@ void RigidWorld::add_static_segment(const Vec2& a, const Vec2& b, const Vec2& in
   tr.setIdentity();
   tr.setOrigin(btVector3(centre[0], centre[1], 0.0));
   tr.setRotation(btQuaternion(btVector3(0, 0, 1), std::atan2(t[1], t[0])));
-  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape.get());
-  info.m_startWorldTransform = tr;
-  info.m_friction = friction;
-  info.m_restitution = restitution;
-  auto body = std::make_unique<btRigidBody>(info);
-  impl_->world.addRigidBody(body.get());
-  impl_->ground_shapes.push_back(std::move(shape));
-  impl_->ground.push_back(std::move(body));
+  impl_->add_ground(std::move(shape), tr, friction, restitution);
 }
 
 std::size_t RigidWorld::size() const { return impl_->bodies.size(); }

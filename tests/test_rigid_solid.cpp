@@ -212,6 +212,48 @@ TEST(SolidBody, BoxSettlesOnTheFloorAndTheContactHoldsItsWeight) {
   EXPECT_NEAR(w.contact_force_3d(b)[2], spec.mass * 9.81, 1e-3 * spec.mass * 9.81);
 }
 
+// A box on a static triangle mesh (a terrain: a 30 degree plane as a grid of 4 x 3 cells, 24 triangles) slides down it
+// at g (sin - mu cos) with Coulomb friction mu = 0.2 (the mesh's friction 1, so the pair's is the body's), and one on
+// a plane less steep than atan(mu) stays.
+TEST(SolidBody, BoxSlidesDownATriangleMeshSlopeWithCoulombFriction) {
+  for (const double degrees : {30.0, 8.0}) {
+    const double theta = degrees * M_PI / 180.0, mu = 0.2, g = 9.81;
+    RigidWorld w(Vec3(0.0, 0.0, -g), 1e-3);
+    TriangleSurface terrain;
+    for (int j = 0; j <= 3; ++j)
+      for (int i = 0; i <= 4; ++i) terrain.vertices.push_back(Vec3(-1.0 + 0.5 * i, -0.75 + 0.5 * j, -std::tan(theta) * (-1.0 + 0.5 * i)));
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) {
+        const int a = j * 5 + i;
+        terrain.triangles.push_back({a, a + 1, a + 6});
+        terrain.triangles.push_back({a, a + 6, a + 5});
+      }
+    w.add_static_mesh(terrain, 1.0, 0.0);
+    // The box resting on the plane at x = 0 (its base centre there), turned with it.
+    const Mat3 R = rotation_about(Vec3::UnitY(), theta);
+    const Vec3 normal = R * Vec3::UnitZ(), down = R * Vec3::UnitX();
+    SolidSpec spec = box_solid(Vec3(0.05 * normal), Vec3(0.2, 0.2, 0.1), 1000.0, R);
+    spec.friction = mu;
+    const int b = w.add_solid(spec);
+    // The acceleration from the speed down the slope at 0.1 s and 0.3 s: over the first steps, before the contact
+    // holds (Bullet's margin), the box gains a little more (measured: 3.94 m/s^2 over the first 0.05 s at 30 degrees).
+    const double dt = 1e-3;
+    double v_early = 0.0;
+    for (int k = 1; k <= 300; ++k) {
+      w.step(dt);
+      if (k == 100) v_early = w.spatial_state(b).velocity.dot(down);
+    }
+    const SpatialState st = w.spatial_state(b);
+    const double a = g * (std::sin(theta) - mu * std::cos(theta));
+    if (a > 0.0) {
+      EXPECT_NEAR((st.velocity.dot(down) - v_early) / 0.2, a, 0.02 * a) << degrees;
+      EXPECT_NEAR(st.velocity.dot(normal), 0.0, 0.01 * st.velocity.norm()) << degrees;  // it stays on the plane
+    } else {
+      EXPECT_LT(st.velocity.norm(), 1e-3) << degrees;
+    }
+  }
+}
+
 TEST(SolidBody, LockedComponentsStayPut) {
   RigidWorld w(Vec3(0.0, 0.0, -9.81), 1e-3);
   SolidSpec spec = box_solid(Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 500.0);
