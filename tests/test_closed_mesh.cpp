@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mesh/closed_mesh.hpp"
+#include "mesh/convex_inset.hpp"
 #include "mesh/even_surface_samples.hpp"
 #include "mesh/mesh_distance.hpp"
 #include "rigid/polyhedron.hpp"
@@ -173,6 +174,26 @@ TEST(ClosedMesh, ShippedEnetGrilliSlideIsTheirGaussianSlide) {
   const double volume = rigid::mass_properties(s).volume;
   EXPECT_LT(volume, 7.726e-3);
   EXPECT_GT(volume, 7.726e-3 * 0.998);
+}
+
+// The exact inset of a box is the box less the margin all round; the shipped slide's, at the margins of dp 0.02 to 0.04
+// (its thin rim closes), lies inside it by the margin: every corner at least the margin from the slide's surface.
+TEST(ConvexInset, IsTheShapeMovedInByTheMargin) {
+  const rigid::TriangleSurface box = rigid::box_surface(Vec3(0.1, 0.2, 0.3), Vec3(0.4, 0.3, 0.2));
+  const rigid::TriangleSurface in = mesh::convex_inset(box, 0.01);
+  EXPECT_NEAR(rigid::mass_properties(in).volume, 0.38 * 0.28 * 0.18, 1e-12);
+  for (const auto& v : in.vertices) EXPECT_NEAR(rigid::distance_to_surface(box, v), 0.01, 1e-12);
+  EXPECT_THROW(mesh::convex_inset(box, 0.1), std::invalid_argument);  // the box is 0.2 thick
+  const rigid::TriangleSurface slide =
+      mesh::read_closed_mesh(std::filesystem::path(SLIDE_SOURCE_DIR) / "cases/meshes/enet_grilli_slide.stl");
+  for (const double margin : {0.002, 0.003, 0.004}) {
+    const rigid::TriangleSurface inset = mesh::convex_inset(slide, margin);
+    for (const auto& v : inset.vertices) {
+      ASSERT_TRUE(rigid::inside_convex(slide, v));
+      ASSERT_GT(rigid::distance_to_surface(slide, v), margin * (1.0 - 1e-6));
+    }
+    EXPECT_LT(rigid::mass_properties(inset).volume, rigid::mass_properties(slide).volume);
+  }
 }
 
 }  // namespace
