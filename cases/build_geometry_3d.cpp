@@ -55,7 +55,7 @@ HeightGrid terrain_grid(const SceneBuild<3>& b, const YAML::Node& wn, std::size_
   const std::filesystem::path file = b.scene_dir / wn["file"].as<std::string>();
   try {
     return read_height_grid(file);
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {  // what the reader says; a grid too large to hold (std::bad_alloc) as well
     throw SceneError(fmt::format("walls[{}].file", w), fmt::format("{}: {}", file.string(), e.what()));
   }
 }
@@ -71,8 +71,19 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
                                   boundary_layers(b.sim->options.re_over_dp));
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
+  // Kept inside the tanks (where the terrain runs into a tank's floor or side, the tank's own layers are there) and on
+  // the scene's side of its symmetry planes (the images beyond come from the mirror ghosts).
+  const auto planes = symmetry_planes(b.r);
+  const auto kept = [&](const Vec<3>& p) {
+    for (const auto& plane : planes)
+      if (!plane.keeps(p)) return false;
+    if (b.tanks.empty()) return true;
+    for (const auto& [lo, hi] : b.tanks)
+      if (p[0] > lo[0] && p[0] < hi[0] && p[1] > lo[1] && p[1] < hi[1] && p[2] > lo[2]) return true;
+    return false;
+  };
   for (const auto& bp : pts) {
-    if (!b.in_period(bp.position[0])) continue;
+    if (!b.in_period(bp.position[0]) || !kept(bp.position)) continue;
     const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
                                 first_phase.viscosity);
     P.wall_normal[i] = bp.normal;

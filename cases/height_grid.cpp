@@ -72,6 +72,7 @@ HeightGrid read_esri_grid(const std::filesystem::path& file) {
   const long nx = std::lround(head["ncols"]), ny = std::lround(head["nrows"]);
   const double h = head["cellsize"];
   if (nx < 2 || ny < 2 || !(h > 0.0)) throw std::runtime_error("a grid needs ncols and nrows of at least 2 and a positive cellsize");
+  if (double(nx) * double(ny) > 1e8) throw std::runtime_error(fmt::format("{} x {} values: more than 1e8", nx, ny));
   const double x0 = corner ? head["xllcorner"] + 0.5 * h : head["xllcenter"];
   const double y0 = corner ? head["yllcorner"] + 0.5 * h : head["yllcenter"];
   HeightGrid g;

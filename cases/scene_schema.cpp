@@ -367,9 +367,10 @@ Schema wall_schema_3d() {
        {"terrain",
         S::map("a terrain or bathymetry: a surface z = h(x, y) from a grid of elevations, each cell two triangles split "
                "along its diagonal from (x_i, y_j) to (x_i+1, y_j+1) (cases/height_grid.hpp), with wall and dummy "
-               "layers below it to the kernel's reach, its particles spread evenly along it (cases/surface_layers.hpp); "
-               "water (below_level, box) stands only above it, a quarter spacing clear; bodies collide with it. Put it "
-               "inside a tank, whose sides hold the water around it",
+               "layers below it to the kernel's reach, a lattice laid along it (cases/terrain_layers.hpp: the fcc's "
+               "close-packed planes, or square layers), kept inside the tanks and on the scene's side of its symmetry "
+               "planes; water (below_level, box) stands only above it, half a layer spacing clear; bodies collide with "
+               "it. Put it inside a tank, whose sides hold the water around it",
                {{"name", S::text("name used in messages", "")},
                 {"file", S::text("the grid, relative to the scene's folder: a .csv (header y\\x,x_0,x_1,..., then a "
                                  "row y_j,z_0j,z_1j,... per y) or an ESRI ASCII grid (.asc)",

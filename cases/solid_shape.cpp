@@ -135,7 +135,7 @@ rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& p
   rigid::TriangleSurface m;
   try {
     m = mesh::read_closed_mesh(file);
-  } catch (const mesh::MeshError& e) {
+  } catch (const std::exception& e) {  // a MeshError, or what CGAL's reader throws
     throw SceneError(path + ".shape.file", fmt::format("{}: {}", file.string(), e.what()));
   }
   const double scale = shape["scale"].as<double>();
@@ -144,7 +144,8 @@ rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& p
   double size = 0.0;
   for (const auto& v : m.vertices) size = std::max(size, (v - m.vertices[0]).norm());
   // Bullet takes a moving body's convex hull, the symmetry cut and the collision inset are written for convex shapes.
-  if (!rigid::is_convex(m, 1e-9 * size))
+  // The tolerance allows an STL's float coordinates (6e-8 of its size) on coplanar faces.
+  if (!rigid::is_convex(m, 1e-6 * size))
     throw SceneError(path + ".shape.file", fmt::format("{}: it is not convex, and a body's mesh must be so far (a concave "
                                                        "moving body needs a convex decomposition, not yet built)",
                                                        file.string()));

@@ -1,10 +1,11 @@
 #pragma once
-// Boundary particles along a triangle surface that is not on the lattice (a mesh body, a terrain): layer l is the
-// surface spread evenly with one point per dp^2 (mesh/even_surface_samples.hpp, each layer its own set, so that the
-// gaps of one do not line up with the next's), moved by (l + 1/2) dp along their face's normal into the solid. Near an edge a point so moved may come nearer another face: it is kept while
-// its depth (its distance to the surface, on the solid's side) is within dp/4 of its layer's (at a convex edge the
-// two faces' points so meet near the bisector; a thin part keeps the layers it has room for). Its normal points to
-// the surface's nearest point and its depth is its distance to it, as at a box's edges.
+// Boundary particles along a mesh body's surface, which is not on the lattice (a terrain has a lattice laid along it:
+// cases/terrain_layers.hpp): layer l is the surface spread evenly with one point per dp^2
+// (mesh/even_surface_samples.hpp, each layer its own set, so that the gaps of one do not line up with the next's),
+// moved by (l + 1/2) dp along their face's normal into the solid. Near an edge a point so moved may come nearer
+// another face: it is kept while its depth (its distance to the surface, on the solid's side) is within dp/4 of its
+// layer's (at a convex edge the two faces' points so meet near the bisector; a thin part keeps the layers it has room
+// for). Its normal points to the surface's nearest point and its depth is its distance to it, as at a box's edges.
 #include <functional>
 #include <vector>
 

@@ -50,7 +50,8 @@ std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& g, const rigid:
   for (int k = 0; k < layers; ++k) {
     const double depth = (k + 0.5) * h;
     // A, B, C: each layer's lattice shifted to the centres of the one above's triangles.
-    const double shift_x = hexagonal ? 0.5 * a * double(k % 3) : 0.0, shift_y = hexagonal ? row / 3.0 * double(k % 3) : 0.0;
+    // (C's shift along x is a whole spacing less, so that its odd rows start on the grid's edge like A's.)
+    const double shift_x = hexagonal ? 0.5 * a * double(k % 3 == 1) : 0.0, shift_y = hexagonal ? row / 3.0 * double(k % 3) : 0.0;
     for (long j = -1; j <= rows; ++j)
       for (long i = -1; i <= columns; ++i) {
         const double x = g.x.front() + (double(i) + 0.5 + (hexagonal && (j % 2 != 0) ? 0.5 : 0.0)) * a + shift_x;

@@ -16,6 +16,27 @@ namespace {
 
 std::string corner_text(const rigid::Vec3& p) { return fmt::format("({:.6g}, {:.6g}, {:.6g})", p[0], p[1], p[2]); }
 
+// A body is one closed surface: its faces joined through their shared edges (union-find) form one piece.
+void check_one_piece(const rigid::TriangleSurface& s) {
+  std::vector<std::size_t> parent(s.triangles.size());
+  for (std::size_t t = 0; t < parent.size(); ++t) parent[t] = t;
+  const auto root = [&parent](std::size_t t) {
+    while (parent[t] != t) t = parent[t] = parent[parent[t]];
+    return t;
+  };
+  std::map<std::pair<int, int>, std::size_t> face_of;  // undirected edge (smaller corner first) -> a face on it
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
+      const auto [it, added] = face_of.emplace(std::pair{std::min(a, b), std::max(a, b)}, t);
+      if (!added) parent[root(t)] = root(it->second);
+    }
+  std::size_t pieces = 0;
+  for (std::size_t t = 0; t < parent.size(); ++t) pieces += root(t) == t;
+  if (pieces > 1)
+    throw MeshError(fmt::format("it is {} separate closed surfaces: a body's mesh must be one", pieces));
+}
+
 // Every edge must border exactly two faces, once in each direction (a closed surface whose faces agree on their
 // orientation); the first that does not is named by its corners.
 void check_edges(const rigid::TriangleSurface& s) {
@@ -83,6 +104,7 @@ void check_closed_mesh(const rigid::TriangleSurface& s) {
                                 -volume));
   const SurfaceMesh m = to_cgal(s);
   if (CGAL::Polygon_mesh_processing::does_self_intersect(m)) throw MeshError("it intersects itself (two of its faces cut each other)");
+  check_one_piece(s);
 }
 
 rigid::TriangleSurface read_closed_mesh(const std::filesystem::path& file) {

@@ -25,7 +25,7 @@ rigid::TriangleSurface read_closed_mesh(const std::filesystem::path& file);
 
 // Throws MeshError naming the first defect found: not triangles, an edge of a single face (a hole) or of more than
 // two (non-manifold), faces turned against their neighbours, faces pointing inward, no volume, faces that cut one
-// another.
+// another, separate closed surfaces.
 void check_closed_mesh(const rigid::TriangleSurface& surface);
 
 }  // namespace slide::mesh

@@ -68,6 +68,7 @@ struct RigidWorld::Impl {
     Vec3 contact = Vec3::Zero();
     btVector3 linear_factor, angular_factor;
     PlanarState kinematic_state;  // kinematic bodies: as last set
+    SpatialState kinematic_solid_state;  // kinematic solids: as last set (Bullet's step rewrites their velocity)
   };
   std::vector<Body> bodies;
   // Every call that changed the world, in order, with its arguments (RigidWorld::journal).
@@ -210,6 +211,7 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   b.linear_factor = btVector3(spec.locked[0] ? 0 : 1, spec.locked[1] ? 0 : 1, spec.locked[2] ? 0 : 1);
   b.angular_factor = btVector3(spec.locked[3] ? 0 : 1, spec.locked[4] ? 0 : 1, spec.locked[5] ? 0 : 1);
   b.spec.kinematic = spec.kinematic;
+  b.kinematic_solid_state.position = spec.centre_of_mass;  // at rest where it is made until a state is set
   impl_->add(std::move(b), start, spec.friction, spec.restitution, btVector3(principal[0], principal[1], principal[2]),
              spec.kinematic);
   return static_cast<int>(impl_->bodies.size() - 1);
@@ -290,6 +292,7 @@ SpatialState RigidWorld::spatial_state(int i) const {
     s.angular_velocity = Vec3(0.0, 0.0, p.angular_velocity);
     return s;
   }
+  if (b.spec.kinematic) return b.kinematic_solid_state;
   const btTransform& tr = b.rigid->getWorldTransform();
   const btQuaternion q = tr.getRotation() * b.principal_to_placed;
   SpatialState s;
@@ -354,6 +357,7 @@ void RigidWorld::set_kinematic_state(int i, const SpatialState& s) {
   b.motion->setWorldTransform(tr);
   b.rigid->setLinearVelocity(v3(s.velocity));
   b.rigid->setAngularVelocity(v3(s.angular_velocity));
+  b.kinematic_solid_state = s;
 }
 
 namespace {
@@ -379,6 +383,7 @@ void RigidWorld::translate(int i, const Vec3& delta) {
   auto& b = impl_->bodies.at(i);
   if (b.planar) throw std::logic_error("a 3-D translation of a planar body");
   move_by(*b.rigid, *b.motion, v3(delta));
+  b.kinematic_solid_state.position += delta;
 }
 
 void RigidWorld::set_velocity(int i, const Vec2& velocity, double angular_velocity) {

@@ -82,6 +82,12 @@ TEST(ClosedMesh, RefusesEachDefectByName) {
     touching.triangles.push_back(u);
   }
   EXPECT_NE(defect_of(touching).find("not a manifold"), std::string::npos) << defect_of(touching);
+  // Two cubes apart: each closed, together not one body.
+  rigid::TriangleSurface apart = cube;
+  const rigid::TriangleSurface far = rigid::box_surface(Vec3(3.0, 0.0, 0.0), Vec3::Ones());
+  for (const auto& v : far.vertices) apart.vertices.push_back(v);
+  for (const auto& t : far.triangles) apart.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  EXPECT_NE(defect_of(apart).find("2 separate closed surfaces"), std::string::npos) << defect_of(apart);
 }
 
 TEST(ClosedMesh, RefusesFilesItCannotRead) {
