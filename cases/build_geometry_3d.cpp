@@ -71,15 +71,15 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
                                   boundary_layers(b.sim->options.re_over_dp));
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
-  // Kept inside the tanks (where the terrain runs into a tank's floor or side, the tank's own layers are there) and on
-  // the scene's side of its symmetry planes (the images beyond come from the mirror ghosts).
+  // Kept inside the tanks or on their sides (where the terrain runs into a tank's floor or side, the tank's own layers
+  // are beyond) and on the scene's side of its symmetry planes (the images beyond come from the mirror ghosts).
   const auto planes = symmetry_planes(b.r);
   const auto kept = [&](const Vec<3>& p) {
     for (const auto& plane : planes)
       if (!plane.keeps(p)) return false;
     if (b.tanks.empty()) return true;
     for (const auto& [lo, hi] : b.tanks)
-      if (p[0] > lo[0] && p[0] < hi[0] && p[1] > lo[1] && p[1] < hi[1] && p[2] > lo[2]) return true;
+      if (p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] > lo[2]) return true;
     return false;
   };
   for (const auto& bp : pts) {

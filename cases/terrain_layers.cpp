@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace slide::cases {
 namespace {
@@ -22,6 +23,15 @@ Vec<3> terrain_normal(const HeightGrid& g, double x, double y) {
   const double slope_x = u >= w ? (z10 - z00) / dx : (z11 - z01) / dx;
   const double slope_y = u >= w ? (z11 - z10) / dy : (z01 - z00) / dy;
   return Vec<3>(-slope_x, -slope_y, 1.0).normalized();
+}
+
+// A lattice coordinate inside [lo, hi], or on an edge that it misses by rounding (a millionth of a spacing): the
+// rows that end on an edge lost their last point where (columns) a / columns came out an ulp beyond it, and water ran
+// down under a flat terrain through the gap (stop 44).
+std::optional<double> onto_edge(double v, double lo, double hi, double spacing) {
+  const double tolerance = 1e-6 * spacing;
+  if (v < lo - tolerance || v > hi + tolerance) return std::nullopt;
+  return std::clamp(v, lo, hi);
 }
 
 }  // namespace
@@ -54,12 +64,17 @@ std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& g, const rigid:
     const double shift_x = hexagonal ? 0.5 * a * double(k % 3 == 1) : 0.0, shift_y = hexagonal ? row / 3.0 * double(k % 3) : 0.0;
     for (long j = -1; j <= rows; ++j)
       for (long i = -1; i <= columns; ++i) {
-        const double x = g.x.front() + (double(i) + 0.5 + (hexagonal && (j % 2 != 0) ? 0.5 : 0.0)) * a + shift_x;
-        const double y = g.y.front() + (double(j) + 0.5) * row + shift_y;
-        if (x < g.x.front() || x > g.x.back() || y < g.y.front() || y > g.y.back()) continue;
-        const Vec<3> on(x, y, terrain_height(g, x, y));
-        const Vec<3> p = on - depth * terrain_normal(g, x, y);
-        if (p[0] < g.x.front() || p[0] > g.x.back() || p[1] < g.y.front() || p[1] > g.y.back()) continue;
+        const auto x = onto_edge(g.x.front() + (double(i) + 0.5 + (hexagonal && (j % 2 != 0) ? 0.5 : 0.0)) * a + shift_x,
+                                 g.x.front(), g.x.back(), a);
+        const auto y = onto_edge(g.y.front() + (double(j) + 0.5) * row + shift_y, g.y.front(), g.y.back(), row);
+        if (!x || !y) continue;
+        const Vec<3> on(*x, *y, terrain_height(g, *x, *y));
+        Vec<3> p = on - depth * terrain_normal(g, *x, *y);
+        // A point of an edge's row moved down a slope's normal leaves the grid by up to the depth times the slope: it
+        // is moved back onto the edge (its depth changes by that times the slope's sine), where dropping it left a
+        // row's spacing free beside the tank's side (stop 44).
+        p[0] = std::clamp(p[0], g.x.front(), g.x.back());
+        p[1] = std::clamp(p[1], g.y.front(), g.y.back());
         if (!(p[2] < terrain_height(g, p[0], p[1]))) continue;
         const double d = distance.distance(p);
         if (d < depth - 0.25 * h || d > depth + 0.25 * h) continue;

@@ -1,4 +1,5 @@
 // Terrains from height grids (cases/height_grid.hpp) and as walls of a 3-D scene (walls[].type: terrain).
+#include <map>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,6 +106,7 @@ walls:
   const double cos15 = std::cos(15.0 * M_PI / 180.0);
   const double h = std::sqrt(2.0) * std::pow(2.0, -1.0 / 3.0) * 0.01 * std::sqrt(2.0 / 3.0);  // fcc (111) spacing
   std::size_t wall_layer = 0, fluid = 0;
+  std::map<long, std::pair<double, double>> row_ends;  // the wall layer's rows (by y in microns): least and most x
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     const Vec<3>& p = P.position[i];
     const double above = (p[2] - height(p)) * cos15;  // distance from the slope's plane, + above
@@ -113,7 +115,7 @@ walls:
       EXPECT_GE(above, 0.5 * h - 1e-9) << p.transpose();
       continue;
     }
-    if (p[0] <= 0.0 || p[0] >= 0.3 || p[1] <= 0.0 || p[1] >= 0.1 || p[2] <= 0.0) continue;  // the tank's own
+    if (p[0] < 0.0 || p[0] > 0.3 || p[1] < 0.0 || p[1] > 0.1 || p[2] <= 0.0) continue;  // the tank's own
     EXPECT_LT(above, 0.0);
     if (std::abs(p[0] - 0.15) < 0.1) {  // away from the slope's ends, the plane is the nearest surface
       EXPECT_NEAR(P.wall_depth[i], -above, 1e-12);
@@ -121,14 +123,29 @@ walls:
     }
     if (P.kind[i] != Kind::wall) continue;
     ++wall_layer;
-    EXPECT_NEAR(-above, 0.5 * h, 1e-12);
+    // On an edge, a point moved down the normal out of the grid is moved back onto it: its depth changes by that
+    // shift (h/2 sin 15) times sin 15.
+    const double edge_shift = 0.5 * h * std::pow(std::sin(15.0 * M_PI / 180.0), 2);
+    EXPECT_NEAR(-above, 0.5 * h, p[0] > 0.0 && p[0] < 0.3 ? 1e-12 : edge_shift + 1e-12);
+    auto [it, fresh] = row_ends.try_emplace(std::lround(p[1] * 1e6), p[0], p[0]);
+    it->second = {std::min(it->second.first, p[0]), std::max(it->second.second, p[0])};
   }
   // Whole numbers of columns and rows across the grid at the spacing a sqrt(cos 15) (a = 1.1225 dp): 27 columns of
   // 0.3 m over 1.103 dp, 10 rows of 0.1 m over 0.955 dp; one point each in the wall layer.
   const double spacing = h * std::sqrt(1.5) * std::sqrt(cos15);
   const long columns = std::lround(0.3 / spacing), rows = std::lround(0.1 / (0.5 * std::sqrt(3.0) * spacing));
   EXPECT_EQ(columns * rows, 270);
-  EXPECT_EQ(long(wall_layer), columns * rows);
+  // Odd rows start and end on the grid's edges: one point more each (the 5 odd rows' edge points at x = 0.3 were lost
+  // to rounding and those at x = 0, moved down the slope's normal out of the grid, were dropped before stop 44).
+  EXPECT_EQ(long(wall_layer), columns * rows + rows / 2);
+  // No row leaves more than half a column free at either end, beyond the layer's shift down the slope's normal along x
+  // (its depth h/2 times sin 15): water would run down under the terrain through it.
+  const double column = 0.3 / double(columns), shift = 0.5 * h * std::sin(15.0 * M_PI / 180.0);
+  ASSERT_EQ(long(row_ends.size()), rows);
+  for (const auto& [y, ends] : row_ends) {
+    EXPECT_LE(ends.first, 0.5 * column + shift + 1e-12) << "row at y = " << y * 1e-6 << " m";
+    EXPECT_GE(ends.second, 0.3 - 0.5 * column - shift - 1e-12) << "row at y = " << y * 1e-6 << " m";
+  }
   EXPECT_GT(fluid, 1000u);
 }
 
