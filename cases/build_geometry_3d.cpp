@@ -67,8 +67,7 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
   t.grid = terrain_grid(b, wn, w);
   t.surface = terrain_surface(t.grid);
   t.distance = std::make_shared<const mesh::MeshDistance>(t.surface, false);
-  const auto pts = terrain_layers(t.grid, t.surface, *t.distance, b.sim->options.lattice, b.dp,
-                                  boundary_layers(b.sim->options.re_over_dp));
+  const auto pts = terrain_layers(t.grid, *t.distance, b.sim->options.lattice, b.dp, b.sim->options.re_over_dp * b.dp);
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
   // Kept inside the tanks or on their sides (where the terrain runs into a tank's floor or side, the tank's own layers
@@ -93,16 +92,9 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
   b.terrains.push_back(std::move(t));
 }
 
-// Whether water may stand at p as far as the terrains go: above each one it covers, half a layer spacing clear of its
-// surface (cases/terrain_layers.hpp).
+// Whether water may stand at p as far as the terrains go: above each one it covers (cases/terrain_layers.hpp).
 bool clear_of_terrains(const SceneBuild<3>& b, const Vec<3>& p) {
-  const double clearance = terrain_clearance(b.sim->options.lattice, b.dp) - 1e-9 * b.dp;
-  for (const auto& t : b.terrains) {
-    const double h = terrain_height(t.grid, p[0], p[1]);
-    if (std::isnan(h)) continue;
-    if (p[2] < h || t.distance->distance(p) < clearance) return false;
-  }
-  return true;
+  return std::all_of(b.terrains.begin(), b.terrains.end(), [&](const auto& t) { return above_terrain(t.grid, p); });
 }
 
 }  // namespace

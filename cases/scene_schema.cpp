@@ -367,10 +367,11 @@ Schema wall_schema_3d() {
        {"terrain",
         S::map("a terrain or bathymetry: a surface z = h(x, y) from a grid of elevations, each cell two triangles split "
                "along its diagonal from (x_i, y_j) to (x_i+1, y_j+1) (cases/height_grid.hpp), with wall and dummy "
-               "layers below it to the kernel's reach, a lattice laid along it (cases/terrain_layers.hpp: the fcc's "
-               "close-packed planes, or square layers), kept inside the tanks and on the scene's side of its symmetry "
-               "planes; water (below_level, box) stands only above it, half a layer spacing clear; bodies collide with "
-               "it. Put it inside a tank, whose sides hold the water around it",
+               "particles below it to the kernel's reach, the water's own lattice cut by its surface (cases/terrain_layers.hpp: "
+               "a flat terrain is a tank's floor, a slope a staircase of the lattice's planes whose particles carry the "
+               "true surface's depth and normal), kept inside the tanks and on the scene's side of its symmetry planes; "
+               "water (below_level, box) takes the lattice's points above it; bodies collide with its true surface. Put "
+               "it inside a tank, whose sides hold the water around it",
                {{"name", S::text("name used in messages", "")},
                 {"file", S::text("the grid, relative to the scene's folder: a .csv (header y\\x,x_0,x_1,..., then a "
                                  "row y_j,z_0j,z_1j,... per y) or an ESRI ASCII grid (.asc)",

@@ -1,5 +1,5 @@
 #pragma once
-// Boundary particles along a mesh body's surface, which is not on the lattice (a terrain has a lattice laid along it:
+// Boundary particles along a mesh body's surface, which is not on the lattice (a terrain's particles are the lattice's:
 // cases/terrain_layers.hpp): layer l is the surface spread evenly with one point per dp^2
 // (mesh/even_surface_samples.hpp, each layer its own set, so that the gaps of one do not line up with the next's),
 // moved by (l + 1/2) dp along their face's normal into the solid. Near an edge a point so moved may come nearer

@@ -1,18 +1,17 @@
 #pragma once
-// A terrain's wall and dummy particles as a lattice laid along it, as 2-D lays rows along a slope (fluid/walls.hpp,
-// lattice_boundary): on the fcc lattice, layers of the fcc's close-packed (111) planes, hexagonal with the fluid's
-// nearest spacing a = 1.1225 dp, stacked A, B, C at (k + 1/2) h below the surface (h = a sqrt(2/3) = 0.9165 dp); on
-// the square lattice, square layers of spacing dp at (k + 1/2) dp. One point per dp^3, as the water's lattice.
-// Each layer is the 2-D lattice in (x, y), every point lifted onto the surface and moved down its normal by the
-// layer's depth; its spacing in (x, y) is a sqrt(cos), cos the ratio of the surface's projected area to its area, so
-// that a plane of any slope holds one point per a^2 sqrt(3)/2 of its own area (along the slope the points stand 1/cos
-// further apart than across it: 3.5 % on a 15 degree slope), rounded to whole numbers of columns and rows across the
-// grid, the first and last half a spacing in from its edges. Why not points spread at random (mesh/even_surface_
-// samples.hpp): their gaps let water through (stop 43: still water over a random-sampled 15 degree terrain started from
-// the lattice reached 2.8 m/s and 48 particles passed under the surface in 0.4 s; the tank's floor, 0.13 m/s and none).
-// A point is kept where its distance to the surface is within a quarter spacing of its layer's depth (behind a kink
-// the two sides' points meet near the bisector), its normal towards the surface's nearest point, its depth the
-// distance to it.
+// A terrain's wall and dummy particles: the water's own lattice below its surface, to the kernel's reach, as a tank's
+// floor and sides are cut from it (fluid/box_walls.hpp). Each point's depth is its distance to the surface and its
+// normal points to the surface's nearest point; its layer is that depth in the lattice's plane spacings (layer 0: a
+// wall particle, the rest dummies). The water takes the lattice's points above the surface, so that water and terrain
+// are one lattice: still water over a flat terrain is the tank's floor's still water, and over a slope the water meets
+// a staircase of the lattice's planes, its particles' depths and normals those of the true surface.
+// Why (stop 44): the terrain's layers were laid along its surface as fcc (111) planes (hexagonal, 0.9165 dp apart) with
+// the water half a layer clear, as 2-D lays rows along a slope. Still water settled over them was not at rest, even
+// over a flat terrain: a 0.3 m x 0.1 m tank, dp 0.01, 0.2 m deep, settled 3 s, over a flat terrain at 0.0238 m reached
+// 5.2 % of sqrt(g H) at 0.2 s and its mean speed grew from 0.007 to 0.011 m/s by 0.6 s; the same terrain's particles on
+// the water's lattice: 0.099 % at 1 s, mean 0.0002 m/s, as the tank's floor alone (0.11 %). The price: on a slope
+// the water's first rows stand on the lattice's steps (the slide work's smooth slope, laid along the face, is 2-D's).
+// Earlier still (stop 43), layers from random even samples let water through (48-240 particles in 0.4 s).
 #include <vector>
 
 #include "cases/height_grid.hpp"
@@ -22,12 +21,11 @@
 
 namespace slide::cases {
 
-std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& grid, const rigid::TriangleSurface& surface,
-                                               const mesh::MeshDistance& distance, LatticeKind kind, double dp,
-                                               int layers);
+// Whether p stands above the terrain (or beside it: outside its grid).
+bool above_terrain(const HeightGrid& grid, const Vec<3>& p);
 
-// How far the water's first lattice points stay from the surface: half the layers' spacing, so that the wall layer,
-// as far below, is one layer spacing from the water.
-double terrain_clearance(LatticeKind kind, double dp);
+// The lattice's points under the grid's surface within `reach` of it (m; the kernel's radius), inside its grid.
+std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& grid, const mesh::MeshDistance& distance,
+                                               LatticeKind kind, double dp, double reach);
 
 }  // namespace slide::cases

@@ -1,8 +1,9 @@
 // Terrains from height grids (cases/height_grid.hpp) and as walls of a 3-D scene (walls[].type: terrain).
-#include <map>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <set>
 
 #include "cases/height_grid.hpp"
 #include "cases/scene.hpp"
@@ -85,9 +86,10 @@ TEST(HeightGrid, RefusesWhatIsWrongSayingWhere) {
 // A 15 degree slope (z = 0.02 + tan(15) x) across a 0.3 m x 0.1 m tank, water to 0.1 m above it (fcc): the terrain's
 // particles lie below its surface at their depth, its wall layer half a (111) plane spacing h = 0.9165 dp down, one
 // point per column and row of its lattice (cases/terrain_layers.hpp); the water stands above it, h/2 clear.
-TEST(Terrain3D, SlopeHoldsItsLayersBelowAndTheWaterAbove) {
+TEST(Terrain3D, SlopeIsTheWatersLatticeBelowItsSurface) {
   const auto dir = testing::fresh_directory("terrain_slope");
-  const double slope = std::tan(15.0 * M_PI / 180.0);
+  const double slope = std::tan(15.0 * M_PI / 180.0), sin15 = std::sin(15.0 * M_PI / 180.0);
+  const double cos15 = std::cos(15.0 * M_PI / 180.0), re = 2.1 * 0.01;
   testing::write_file(dir / "slope.csv", fmt::format("y\\x,0,0.3\n0,0.02,{0}\n0.1,0.02,{0}\n", 0.02 + 0.3 * slope));
   testing::write_file(dir / "s.yaml", R"(dimension: 3
 particle_spacing: 0.01
@@ -103,50 +105,58 @@ walls:
   const auto scene = build_scene<3>(load_scene(dir / "s.yaml", {}), "s", dir);
   const auto& P = scene->simulation->particles();
   const auto height = [&](const Vec<3>& p) { return 0.02 + slope * p[0]; };
-  const double cos15 = std::cos(15.0 * M_PI / 180.0);
-  const double h = std::sqrt(2.0) * std::pow(2.0, -1.0 / 3.0) * 0.01 * std::sqrt(2.0 / 3.0);  // fcc (111) spacing
-  std::size_t wall_layer = 0, fluid = 0;
-  std::map<long, std::pair<double, double>> row_ends;  // the wall layer's rows (by y in microns): least and most x
+  const double s = 0.01 * std::pow(2.0, -1.0 / 3.0);  // the fcc's plane spacing
+  // Each particle's site on the simple cubic lattice of spacing s: ((i + 1/2) s, (j + 1/2) s, (k + 1/2) s).
+  const auto site = [&](const Vec<3>& p) {
+    return std::array<long, 3>{std::lround(p[0] / s - 0.5), std::lround(p[1] / s - 0.5), std::lround(p[2] / s - 0.5)};
+  };
+  std::set<std::array<long, 3>> sites;
+  std::size_t terrain = 0, wall_layer = 0;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     const Vec<3>& p = P.position[i];
+    const auto c = site(p);
+    // Every particle, water, tank and terrain alike, on the one fcc lattice, each site once.
+    ASSERT_NEAR((p - s * Vec<3>(c[0] + 0.5, c[1] + 0.5, c[2] + 0.5)).norm(), 0.0, 1e-12) << p.transpose();
+    EXPECT_EQ(((c[0] + c[1] + c[2]) % 2 + 2) % 2, 0) << p.transpose();
+    EXPECT_TRUE(sites.insert(c).second) << "two particles at " << p.transpose();
     const double above = (p[2] - height(p)) * cos15;  // distance from the slope's plane, + above
     if (P.kind[i] == Kind::fluid) {
-      ++fluid;
-      EXPECT_GE(above, 0.5 * h - 1e-9) << p.transpose();
+      EXPECT_GT(above, 0.0) << p.transpose();
       continue;
     }
     if (p[0] < 0.0 || p[0] > 0.3 || p[1] < 0.0 || p[1] > 0.1 || p[2] <= 0.0) continue;  // the tank's own
-    EXPECT_LT(above, 0.0);
-    if (std::abs(p[0] - 0.15) < 0.1) {  // away from the slope's ends, the plane is the nearest surface
+    ++terrain;
+    EXPECT_LE(above, 0.0);
+    EXPECT_LE(-above, re + 1e-12);
+    EXPECT_EQ(P.kind[i] == Kind::wall, -above < s) << p.transpose();  // layer 0: within a plane spacing
+    wall_layer += P.kind[i] == Kind::wall;
+    // Away from the slope's ends its plane is the nearest surface: the particle carries its true depth and normal.
+    if (p[0] > 0.03 && p[0] < 0.27) {
       EXPECT_NEAR(P.wall_depth[i], -above, 1e-12);
-      EXPECT_NEAR(P.wall_normal[i].dot(Vec<3>(-std::sin(15.0 * M_PI / 180.0), 0.0, cos15)), 1.0, 1e-12);
+      EXPECT_NEAR(P.wall_normal[i].dot(Vec<3>(-sin15, 0.0, cos15)), 1.0, 1e-12);
     }
-    if (P.kind[i] != Kind::wall) continue;
-    ++wall_layer;
-    // On an edge, a point moved down the normal out of the grid is moved back onto it: its depth changes by that
-    // shift (h/2 sin 15) times sin 15.
-    const double edge_shift = 0.5 * h * std::pow(std::sin(15.0 * M_PI / 180.0), 2);
-    EXPECT_NEAR(-above, 0.5 * h, p[0] > 0.0 && p[0] < 0.3 ? 1e-12 : edge_shift + 1e-12);
-    auto [it, fresh] = row_ends.try_emplace(std::lround(p[1] * 1e6), p[0], p[0]);
-    it->second = {std::min(it->second.first, p[0]), std::max(it->second.second, p[0])};
   }
-  // Whole numbers of columns and rows across the grid at the spacing a sqrt(cos 15) (a = 1.1225 dp): 27 columns of
-  // 0.3 m over 1.103 dp, 10 rows of 0.1 m over 0.955 dp; one point each in the wall layer.
-  const double spacing = h * std::sqrt(1.5) * std::sqrt(cos15);
-  const long columns = std::lround(0.3 / spacing), rows = std::lround(0.1 / (0.5 * std::sqrt(3.0) * spacing));
-  EXPECT_EQ(columns * rows, 270);
-  // Odd rows start and end on the grid's edges: one point more each (the 5 odd rows' edge points at x = 0.3 were lost
-  // to rounding and those at x = 0, moved down the slope's normal out of the grid, were dropped before stop 44).
-  EXPECT_EQ(long(wall_layer), columns * rows + rows / 2);
-  // No row leaves more than half a column free at either end, beyond the layer's shift down the slope's normal along x
-  // (its depth h/2 times sin 15): water would run down under the terrain through it.
-  const double column = 0.3 / double(columns), shift = 0.5 * h * std::sin(15.0 * M_PI / 180.0);
-  ASSERT_EQ(long(row_ends.size()), rows);
-  for (const auto& [y, ends] : row_ends) {
-    EXPECT_LE(ends.first, 0.5 * column + shift + 1e-12) << "row at y = " << y * 1e-6 << " m";
-    EXPECT_GE(ends.second, 0.3 - 0.5 * column - shift - 1e-12) << "row at y = " << y * 1e-6 << " m";
+  // The lattice has no hole where water meets the terrain: every water particle more than two planes below the water's
+  // surface has all its 12 nearest sites taken (by water, the terrain or the tank).
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    if (P.kind[i] != Kind::fluid || P.position[i][2] > 0.1 - 2.0 * s) continue;
+    const auto c = site(P.position[i]);
+    for (int a = 0; a < 3; ++a)
+      for (const int u : {-1, 1})
+        for (const int v : {-1, 1}) {
+          auto n = c;
+          n[(a + 1) % 3] += u;
+          n[(a + 2) % 3] += v;
+          EXPECT_TRUE(sites.count(n)) << "a hole beside the water particle at " << P.position[i].transpose();
+        }
+    ++checked;
   }
-  EXPECT_GT(fluid, 1000u);
+  EXPECT_GT(checked, 800u);
+  // The terrain's particles fill the band re deep under 0.3 m x 0.1 m of slope, one per dp^3: 0.3 / cos15 x 0.1 x re /
+  // dp^3 = 652 (676 built); the wall layer a plane spacing deep, 246 (253 built); the lattice's steps make the rest.
+  EXPECT_NEAR(double(terrain), 0.3 / cos15 * 0.1 * re / 1e-6, 0.05 * 652);
+  EXPECT_NEAR(double(wall_layer), 0.3 / cos15 * 0.1 * s / 1e-6, 0.05 * 246);
 }
 
 TEST(Terrain3D, AMissingOrBadGridIsRefusedNamingTheKeyAndTheFile) {
