@@ -1,5 +1,6 @@
-// Steps of a 3-D scene's geometry (dimension: 3): its walls (tanks: fluid/box_walls.hpp), its fluid regions (box,
-// below_level inside the tanks) on the simple cubic lattice, and its particle count estimated before any is made.
+// Steps of a 3-D scene's geometry (dimension: 3): its walls (tanks: fluid/box_walls.hpp; terrains:
+// cases/terrain_layers.hpp), its fluid regions (box, below_level inside the tanks) on the scene's lattice, and its
+// particle count estimated before any is made.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -60,29 +61,38 @@ HeightGrid terrain_grid(const SceneBuild<3>& b, const YAML::Node& wn, std::size_
   }
 }
 
-// A terrain (walls[w], type: terrain): its grid read from the scene's folder, its surface, and its boundary particles
-// in layers laid along it below the surface (cases/terrain_layers.hpp), to the kernel's reach.
-void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w) {
+// How deep a terrain's particles reach under its surface: the kernel's radius on the fcc lattice, whole layers of dp
+// on the square lattice, as a tank's walls (fluid/box_walls.hpp).
+double terrain_reach(const SceneBuild<3>& b) {
+  const FluidOptions<3>& opt = b.sim->options;
+  return opt.lattice == LatticeKind::square ? boundary_layers(opt.re_over_dp) * b.dp : opt.re_over_dp * b.dp;
+}
+
+// A terrain (walls[w], type: terrain): its grid read from the scene's folder, its surface, and its boundary particles,
+// the lattice's points below the surface to the kernel's reach (cases/terrain_layers.hpp). Built after the tanks: a
+// point is kept strictly inside a tank (the tank's own points are its faces and beyond) and on the scene's side of its
+// symmetry planes (the images beyond come from the mirror ghosts), and only where no wall has put one (`placed`).
+void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w,
+                   std::set<std::tuple<long, long, long>>& placed) {
   typename SceneBuild<3>::Terrain t;
   t.grid = terrain_grid(b, wn, w);
   t.surface = terrain_surface(t.grid);
   t.distance = std::make_shared<const mesh::MeshDistance>(t.surface, false);
-  const auto pts = terrain_layers(t.grid, *t.distance, b.sim->options.lattice, b.dp, b.sim->options.re_over_dp * b.dp);
+  const auto pts = terrain_layers(t.grid, *t.distance, b.sim->options.lattice, b.dp, terrain_reach(b));
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
-  // Kept inside the tanks or on their sides (where the terrain runs into a tank's floor or side, the tank's own layers
-  // are beyond) and on the scene's side of its symmetry planes (the images beyond come from the mirror ghosts).
   const auto planes = symmetry_planes(b.r);
+  const double eps = 1e-9 * b.dp;
   const auto kept = [&](const Vec<3>& p) {
     for (const auto& plane : planes)
       if (!plane.keeps(p)) return false;
-    if (b.tanks.empty()) return true;
-    for (const auto& [lo, hi] : b.tanks)
-      if (p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] > lo[2]) return true;
-    return false;
+    return b.tanks.empty() || std::any_of(b.tanks.begin(), b.tanks.end(), [&](const auto& tank) {
+             return inside_tank(p, tank[0], tank[1], eps);
+           });
   };
   for (const auto& bp : pts) {
     if (!b.in_period(bp.position[0]) || !kept(bp.position)) continue;
+    if (!placed.insert(lattice_index(bp.position, row_spacing(b.sim->options.lattice, b.dp))).second) continue;
     const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
                                 first_phase.viscosity);
     P.wall_normal[i] = bp.normal;
@@ -107,10 +117,7 @@ void build_walls(SceneBuild<3>& b) {
   std::set<std::tuple<long, long, long>> placed;
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];
-    if (wn["type"].as<std::string>() == "terrain") {
-      build_terrain(b, wn, w);
-      continue;
-    }
+    if (wn["type"].as<std::string>() == "terrain") continue;  // after the tanks (build_terrain)
     const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
     if (b.sim->options.lattice == LatticeKind::square) check_on_the_cubic_lattice(lo, hi, b.dp, w);
     // Sides of symmetry have no particles: the mirror images of what stands near them take their place.
@@ -137,6 +144,8 @@ void build_walls(SceneBuild<3>& b) {
     }
     b.tanks.push_back({lo, hi});
   }
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w)
+    if (b.r["walls"][w]["type"].as<std::string>() == "terrain") build_terrain(b, b.r["walls"][w], w, placed);
 }
 
 // box: the particles whose cell lies inside [min, max]; below_level: those whose cell lies inside a tank, with their
@@ -206,14 +215,14 @@ double estimated_particles(const SceneBuild<3>& b) {
       level = std::max(level, rn["level"].as<double>());
     }
   }
-  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {  // a terrain: its surface's area times its layers
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {  // a terrain: its surface's area times its particles' reach
     const auto wn = b.r["walls"][w];
     if (wn["type"].as<std::string>() != "terrain") continue;
     const rigid::TriangleSurface s = terrain_surface(terrain_grid(b, wn, w));
     double area = 0.0;
     for (const auto& t : s.triangles)
       area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
-    n += area * boundary_layers(b.sim->options.re_over_dp) / (dp * dp);
+    n += area * terrain_reach(b) / cell;
   }
   for (const auto& wn : b.r["walls"]) {
     if (wn["type"].as<std::string>() != "tank") continue;

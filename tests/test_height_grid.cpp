@@ -84,8 +84,8 @@ TEST(HeightGrid, RefusesWhatIsWrongSayingWhere) {
 }
 
 // A 15 degree slope (z = 0.02 + tan(15) x) across a 0.3 m x 0.1 m tank, water to 0.1 m above it (fcc): the terrain's
-// particles lie below its surface at their depth, its wall layer half a (111) plane spacing h = 0.9165 dp down, one
-// point per column and row of its lattice (cases/terrain_layers.hpp); the water stands above it, h/2 clear.
+// particles are the water's lattice below its surface, to re, at their depth (cases/terrain_layers.hpp); the water
+// takes the lattice above it, without a hole between them.
 TEST(Terrain3D, SlopeIsTheWatersLatticeBelowItsSurface) {
   const auto dir = testing::fresh_directory("terrain_slope");
   const double slope = std::tan(15.0 * M_PI / 180.0), sin15 = std::sin(15.0 * M_PI / 180.0);
@@ -157,6 +157,37 @@ walls:
   // dp^3 = 652 (676 built); the wall layer a plane spacing deep, 246 (253 built); the lattice's steps make the rest.
   EXPECT_NEAR(double(terrain), 0.3 / cos15 * 0.1 * re / 1e-6, 0.05 * 652);
   EXPECT_NEAR(double(wall_layer), 0.3 / cos15 * 0.1 * s / 1e-6, 0.05 * 246);
+}
+
+// Where the terrain runs into a tank: a tank whose min x face lies on a plane of lattice points (x = s/2: its own wall
+// points there), a grid wider than the tank and reaching below its floor, the terrain listed before the tank. Every
+// particle on its own site; the terrain's strictly inside the tank.
+TEST(Terrain3D, MeetsATankOnTheLatticeWithoutDoubledParticles) {
+  const auto dir = testing::fresh_directory("terrain_tank_meet");
+  const double s = 0.01 * std::pow(2.0, -1.0 / 3.0);
+  testing::write_file(dir / "slope.csv", "y\\x,-0.1,0.4\n-0.1,0.03,-0.02\n0.2,0.03,-0.02\n");
+  testing::write_file(dir / "s.yaml", fmt::format(R"(dimension: 3
+particle_spacing: 0.01
+end_time: 0.01
+method: {{initial_state: lattice}}
+fluid:
+  phases: [{{name: water, density: 1000}}]
+  regions: [{{type: below_level, level: 0.1}}]
+walls:
+  - {{name: slope, type: terrain, file: slope.csv}}
+  - {{type: tank, min: [{}, 0, 0], max: [0.3, 0.1, 0.2]}}
+)", 0.5 * s));
+  const auto scene = build_scene<3>(load_scene(dir / "s.yaml", {}), "s", dir);
+  const auto& P = scene->simulation->particles();
+  std::set<std::array<long, 3>> sites;
+  std::size_t tank_face = 0;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    const Vec<3>& p = P.position[i];
+    EXPECT_TRUE(sites.insert({std::lround(p[0] / s - 0.5), std::lround(p[1] / s - 0.5), std::lround(p[2] / s - 0.5)}).second)
+        << "two particles at " << p.transpose();
+    tank_face += P.kind[i] != Kind::fluid && std::abs(p[0] - 0.5 * s) < 1e-12 && p[2] > 0.0;
+  }
+  EXPECT_GT(tank_face, 0u);  // the face's own points are there, once
 }
 
 TEST(Terrain3D, AMissingOrBadGridIsRefusedNamingTheKeyAndTheFile) {
