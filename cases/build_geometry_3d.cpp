@@ -23,8 +23,58 @@ int tank_layers(const SceneBuild<3>& b, const YAML::Node& wn) {
 }
 
 // A lattice point's index, the key that tells two walls' points at the same place apart from neighbours.
-std::tuple<long, long, long> lattice_index(const Vec<3>& p, double spacing) {
-  return {std::lround(p[0] / spacing - 0.5), std::lround(p[1] / spacing - 0.5), std::lround(p[2] / spacing - 0.5)};
+std::tuple<long, long, long> lattice_index(const SceneBuild<3>& b, const Vec<3>& p) {
+  const double spacing = row_spacing(b.sim->options.lattice, b.dp);
+  const Vec<3> q = (p - b.scene->lattice_offset) / spacing;
+  return {std::lround(q[0] - 0.5), std::lround(q[1] - 0.5), std::lround(q[2] - 0.5)};
+}
+
+// On the fcc lattice a plane of symmetry must pass through one of the lattice's planes: then its particles are their
+// own images and the images of the planes beside it are the lattice's next planes (A B A). A plane midway between two
+// (B | A) puts A's images where B belongs, a second A 0.794 dp straight across from A: a stacking fault, which stirred
+// still water to 6.4 % of sqrt(g H) (hydrostatic_3d with a plane, stop 44; docs/three-d.md). So the lattice is moved
+// along each plane's axis to meet it (two planes on one axis must then lie a whole number of plane spacings apart). On
+// the square lattice the planes lie midway between planes, on multiples of dp (check_on_the_cubic_lattice), where the
+// images continue the lattice: no move.
+Vec<3> lattice_offset_for_planes(const SceneBuild<3>& b) {
+  Vec<3> offset = Vec<3>::Zero();
+  if (b.sim->options.lattice != LatticeKind::fcc) return offset;
+  const double s = fcc_plane_spacing(b.dp);
+  std::array<const SymmetryPlane*, 3> first{};
+  for (const SymmetryPlane& plane : symmetry_planes(b.r)) {
+    const MirrorPlane m = plane.mirror();
+    const double move = m.at - (std::round(m.at / s - 0.5) + 0.5) * s;  // in [-s/2, s/2]
+    if (!first[m.axis]) {
+      first[m.axis] = &plane;
+      offset[m.axis] = move;
+      continue;
+    }
+    const double apart = (m.at - first[m.axis]->mirror().at) / s;
+    if (std::abs(apart - std::round(apart)) > 1e-6)
+      throw SceneError(plane.key, fmt::format("on the fcc lattice a plane of symmetry passes through one of the "
+                                              "lattice's planes, {:.9g} m apart across {}; this one lies {:.6g} of them "
+                                              "from {}: make it a whole number",
+                                              s, "xyz"[m.axis], apart, first[m.axis]->key));
+  }
+  return offset;
+}
+
+// The box [lo, hi] closed on the planes of symmetry its faces lie on: a lattice point on such a plane is its own
+// mirror image, and the inside's (the water's, a terrain's) as its images beyond would be.
+std::array<Vec<3>, 2> closed_on_planes(const std::vector<SymmetryPlane>& planes, Vec<3> lo, Vec<3> hi, double eps) {
+  for (const SymmetryPlane& plane : planes) {
+    const MirrorPlane m = plane.mirror();
+    Vec<3>& face = m.keeps_above ? lo : hi;
+    if (std::abs(face[m.axis] - m.at) <= eps) face[m.axis] += m.keeps_above ? -2.0 * eps : 2.0 * eps;
+  }
+  return {lo, hi};
+}
+
+// Whether p lies on the scene's side of every plane of symmetry, or on one.
+bool on_modelled_side(const std::vector<SymmetryPlane>& planes, const Vec<3>& p, double eps) {
+  for (const SymmetryPlane& plane : planes)
+    if (!plane.keeps(p) && !plane.holds(p, eps)) return false;
+  return true;
 }
 
 // Whether a lattice point p belongs to the box [lo, hi], by the 2-D rules: on the square lattice its cell lies inside
@@ -78,21 +128,23 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w,
   t.grid = terrain_grid(b, wn, w);
   t.surface = terrain_surface(t.grid);
   t.distance = std::make_shared<const mesh::MeshDistance>(t.surface, false);
-  const auto pts = terrain_layers(t.grid, *t.distance, b.sim->options.lattice, b.dp, terrain_reach(b));
+  const auto pts = terrain_layers(t.grid, *t.distance, b.sim->options.lattice, b.dp, terrain_reach(b),
+                                  b.scene->lattice_offset);
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
-  const auto planes = symmetry_planes(b.r);
   const double eps = 1e-9 * b.dp;
+  const auto planes = symmetry_planes(b.r);
+  std::vector<std::array<Vec<3>, 2>> insides;
+  for (const auto& [lo, hi] : b.tanks) insides.push_back(closed_on_planes(planes, lo, hi, eps));
   const auto kept = [&](const Vec<3>& p) {
-    for (const auto& plane : planes)
-      if (!plane.keeps(p)) return false;
-    return b.tanks.empty() || std::any_of(b.tanks.begin(), b.tanks.end(), [&](const auto& tank) {
-             return inside_tank(p, tank[0], tank[1], eps);
-           });
+    return on_modelled_side(planes, p, eps) &&
+           (insides.empty() || std::any_of(insides.begin(), insides.end(), [&](const auto& in) {
+              return inside_tank(p, in[0], in[1], eps);
+            }));
   };
   for (const auto& bp : pts) {
     if (!b.in_period(bp.position[0]) || !kept(bp.position)) continue;
-    if (!placed.insert(lattice_index(bp.position, row_spacing(b.sim->options.lattice, b.dp))).second) continue;
+    if (!placed.insert(lattice_index(b, bp.position)).second) continue;
     const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
                                 first_phase.viscosity);
     P.wall_normal[i] = bp.normal;
@@ -115,6 +167,7 @@ void build_walls(SceneBuild<3>& b) {
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
   std::set<std::tuple<long, long, long>> placed;
+  b.scene->lattice_offset = lattice_offset_for_planes(b);
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];
     if (wn["type"].as<std::string>() == "terrain") continue;  // after the tanks (build_terrain)
@@ -129,13 +182,14 @@ void build_walls(SceneBuild<3>& b) {
     std::vector<BoundaryPointOf<3>> pts;
     try {
       const FluidOptions<3>& opt = b.sim->options;
-      pts = tank_boundary(opt.lattice, lo, hi, b.dp, tank_layers(b, wn), opt.re_over_dp * b.dp, mirror_sides);
+      pts = tank_boundary(opt.lattice, lo, hi, b.dp, tank_layers(b, wn), opt.re_over_dp * b.dp, mirror_sides,
+                          b.scene->lattice_offset);
     } catch (const std::invalid_argument& e) {
       throw SceneError(fmt::format("walls[{}].max", w), e.what());
     }
     std::erase_if(pts, [&](const BoundaryPointOf<3>& p) { return !b.in_period(p.position[0]); });
     for (const auto& bp : pts) {
-      if (!placed.insert(lattice_index(bp.position, row_spacing(b.sim->options.lattice, b.dp))).second) continue;
+      if (!placed.insert(lattice_index(b, bp.position)).second) continue;
       const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
                                   first_phase.viscosity);
       P.wall_normal[i] = bp.normal;
@@ -149,12 +203,21 @@ void build_walls(SceneBuild<3>& b) {
 }
 
 // box: the particles whose cell lies inside [min, max]; below_level: those whose cell lies inside a tank, with their
-// centre below the level (which raises the still-water level to it).
+// centre below the level (which raises the still-water level to it). Both on the scene's lattice (moved to meet its
+// planes of symmetry), on the scene's side of those planes, a point on one included (its own image).
 void fill_fluid_regions(SceneBuild<3>& b) {
   Particles<3>& P = b.particles();
   b.boundary_count = P.size();
   const double dp = b.dp;
   const LatticeKind kind = b.sim->options.lattice;
+  const Vec<3> offset = b.scene->lattice_offset;
+  const double eps = 1e-9 * dp;
+  const auto planes = symmetry_planes(b.r);
+  std::vector<std::array<Vec<3>, 2>> insides;  // the tanks', closed on the planes and open above
+  for (const auto& [lo, hi] : b.tanks) {
+    insides.push_back(closed_on_planes(planes, lo, hi, eps));
+    insides.back()[1][2] = INFINITY;
+  }
   for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
     const auto rn = b.r["fluid"]["regions"][k];
     const std::string path = fmt::format("fluid.regions[{}]", k);
@@ -162,7 +225,8 @@ void fill_fluid_regions(SceneBuild<3>& b) {
     const auto& phase = b.phases.phases[ph];
     std::size_t added = 0;
     auto take = [&](const Vec<3>& p, bool inside) {
-      if (!inside || !b.in_period(p[0]) || body_near(b, p) >= 0 || !clear_of_terrains(b, p)) return;
+      if (!inside || !b.in_period(p[0]) || !on_modelled_side(planes, p, eps) || body_near(b, p) >= 0 || !clear_of_terrains(b, p))
+        return;
       P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
       b.fluid_owner.push_back(path);
       ++added;
@@ -171,28 +235,25 @@ void fill_fluid_regions(SceneBuild<3>& b) {
       const Vec<3> lo = vec_of<3>(rn["min"]), hi = vec_of<3>(rn["max"]);
       for (int a = 0; a < 3; ++a)
         if (!(lo[a] < hi[a])) throw SceneError(path + ".max", "must exceed min in x, y and z");
-      for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<3>& p) { take(p, in_box(kind, p, lo, hi, dp)); });
+      const auto [in_lo, in_hi] = closed_on_planes(planes, lo, hi, eps);
+      for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<3>& p) { take(p, in_box(kind, p, in_lo, in_hi, dp)); },
+                             offset);
     } else {
       if (b.tanks.empty()) throw SceneError(path, "a below_level region needs a tank around it");
       const double level = rn["level"].as<double>();
       b.still_level = std::max(b.still_level, level);
-      for (const auto& [lo, hi] : b.tanks) {
+      for (std::size_t t = 0; t < b.tanks.size(); ++t) {
+        const auto& [lo, hi] = b.tanks[t];
         Vec<3> top = hi;
         top[2] = std::min(hi[2], level);
-        // The tank's inside, open above, by the lattice's rule.
-        const auto in_tank = [&](const Vec<3>& p, const Vec<3>& t_lo, const Vec<3>& t_hi) {
-          Vec<3> open_hi = t_hi;
-          open_hi[2] = INFINITY;
-          return in_box(kind, p, t_lo, open_hi, dp);
-        };
-        for_each_lattice_point(kind, dp, lo, top, [&](const Vec<3>& p) {
+        // The tank's inside, by the lattice's rule.
+        const auto in_tank = [&](const Vec<3>& p, std::size_t u) { return in_box(kind, p, insides[u][0], insides[u][1], dp); };
+        const auto visit = [&](const Vec<3>& p) {
           bool earlier = false;  // inside a tank already filled (tanks that overlap)
-          for (const auto& t : b.tanks) {
-            if (&t[0] == &lo) break;
-            earlier = earlier || in_tank(p, t[0], t[1]);
-          }
-          take(p, p[2] < top[2] && in_tank(p, lo, hi) && !earlier);  // below the level and the tank's top
-        });
+          for (std::size_t u = 0; u < t; ++u) earlier = earlier || in_tank(p, u);
+          take(p, p[2] < top[2] && in_tank(p, t) && !earlier);  // below the level and the tank's top
+        };
+        for_each_lattice_point(kind, dp, lo, top, visit, offset);
       }
     }
     if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", dp));

@@ -31,6 +31,19 @@ std::string extent_text(const Vec<D>& lo, const Vec<D>& hi) {
   return out;
 }
 
+// How far the start lattice was moved: its rows to meet a 2-D body's bottom, or across x and y in 3-D to put one of
+// the fcc lattice's planes on each plane of symmetry (cases/build_geometry_3d.cpp).
+template <int D>
+std::string lattice_move_text(const Vec<D>& offset) {
+  if constexpr (D == 2) {
+    return offset[1] != 0.0 ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", offset[1]) : std::string();
+  } else {
+    if (offset[0] == 0.0 && offset[1] == 0.0) return {};
+    return fmt::format(", moved ({:+.6g}, {:+.6g}) m in x and y to put a plane on each plane of symmetry", offset[0],
+                       offset[1]);
+  }
+}
+
 template <int D>
 std::string summary(const Scene<D>& scene) {
   const auto& sim = *scene.simulation;
@@ -50,9 +63,7 @@ std::string summary(const Scene<D>& scene) {
       "memory          about {:.1f} MB at its peak{}\n",
       scene.name, sim.particles().real_count(), scene.fluid_count, scene.wall_count, scene.dummy_count, o.dp,
       o.re_over_dp, sim.re(), to_string(o.lattice), nearest_spacing(o.lattice, o.dp) / o.dp,
-      scene.lattice_offset[D - 1] != 0.0
-          ? fmt::format(", rows moved {:+.6g} m to meet bodies[0]'s bottom", scene.lattice_offset[D - 1])
-          : std::string(),
+      lattice_move_text<D>(scene.lattice_offset),
       sim.lattice.n0, sim.lattice.lambda, sim.lattice.lambda / (o.dp * o.dp), o.sound_speed,
       scene.sound_speed_source, to_string(o.gradient), dt, to_string(limit), scene.end_time, scene.end_time / dt,
       extent_text<D>(o.domain_lo, o.domain_hi), scene.memory_estimate_bytes / 1e6,

@@ -123,7 +123,9 @@ struct Scene {
   ProfileSpec profiles;
   OutputSpec output;
   double deepest_water = 0.0;      // m, nominal
-  Vec<D> lattice_offset = Vec<D>::Zero();  // m, how far the start lattice was moved (to meet a body's bottom)
+  // m, how far the start lattice was moved (2-D: its rows to meet a body's bottom; 3-D: one of its planes onto each
+  // plane of symmetry)
+  Vec<D> lattice_offset = Vec<D>::Zero();
   std::string sound_speed_source;  // how c0 was chosen
   std::size_t fluid_count = 0, wall_count = 0, dummy_count = 0;
   std::size_t gate_particles = 0;  // boundary particles of gates (walls[].gate), taken away at t = 0

@@ -359,9 +359,11 @@ Schema wall_schema_3d() {
                         {"layers", S::integer("boundary layers (wall + dummies); 0 = ceil(re / dp), enough to cover "
                                               "the kernel", 0L, 0L, 10L)},
                         {"symmetry", S::list("sides that are planes of symmetry: the scene is the half (or quarter) of a "
-                                             "symmetric one on this side of them. They hold no particles: what stands "
-                                             "within the kernel's reach of them gets its mirror image beyond "
-                                             "(fluid/ghosts.hpp), which makes them free-slip; a body they cut is its "
+                                             "symmetric one on this side of them. What stands within the kernel's "
+                                             "reach of them gets its mirror image beyond (fluid/ghosts.hpp), which "
+                                             "makes them free-slip; on the fcc lattice the lattice is moved to put one "
+                                             "of its planes on each (its particles there are their own images; two on "
+                                             "one axis a whole number of plane spacings apart); a body they cut is its "
                                              "part on this side, and moves along them without turning",
                                              S::choice("side", {"x_min", "x_max", "y_min", "y_max"}, std::nullopt))}})},
        {"terrain",

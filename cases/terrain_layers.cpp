@@ -27,12 +27,12 @@ bool above_terrain(const HeightGrid& grid, const Vec<3>& p) {
 }
 
 std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& g, const mesh::MeshDistance& distance,
-                                               LatticeKind kind, double dp, double reach) {
+                                               LatticeKind kind, double dp, double reach, const Vec<3>& offset) {
   const auto [lowest, highest] = std::minmax_element(g.z.begin(), g.z.end());
   const Vec<3> lo(g.x.front(), g.y.front(), *lowest - reach), hi(g.x.back(), g.y.back(), *highest);
   const double spacing = row_spacing(kind, dp), eps = 1e-9 * dp;
   std::vector<BoundaryPointOf<3>> out;
-  for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<3>& p) {
+  const auto visit = [&](const Vec<3>& p) {
     if (above_terrain(g, p) || std::isnan(terrain_height(g, p[0], p[1]))) return;
     const Vec<3> nearest = distance.nearest_point(p);
     const double depth = (nearest - p).norm();
@@ -40,7 +40,8 @@ std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& g, const mesh::
     // A point on the surface itself takes the normal of the triangle under it.
     const Vec<3> normal = depth > eps ? Vec<3>((nearest - p) / depth) : terrain_normal(g, p[0], p[1]);
     out.push_back({p, normal, depth, static_cast<int>(std::floor(depth / spacing + 1e-9))});
-  });
+  };
+  for_each_lattice_point(kind, dp, lo, hi, visit, offset);
   return out;
 }
 

@@ -24,8 +24,10 @@ namespace slide::cases {
 // Whether p stands above the terrain (or beside it: outside its grid).
 bool above_terrain(const HeightGrid& grid, const Vec<3>& p);
 
-// The lattice's points under the grid's surface within `reach` of it (m; the kernel's radius), inside its grid.
+// The lattice's points (moved by `offset`, as the water's) under the grid's surface within `reach` of it (m; the
+// kernel's radius), inside its grid.
 std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& grid, const mesh::MeshDistance& distance,
-                                               LatticeKind kind, double dp, double reach);
+                                               LatticeKind kind, double dp, double reach,
+                                               const Vec<3>& offset = Vec<3>::Zero());
 
 }  // namespace slide::cases

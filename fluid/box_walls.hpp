@@ -11,8 +11,11 @@
 // image (x + 2 depth normal) lies in the fluid's corner, as polyline_boundary's mitred corners do in 2-D. A point on a
 // face (fcc) has that face's normal (the sum of its faces', normalised, on an edge) and depth 0.
 // A side in `mirror_sides` (bit 2 a: the min face across axis a, bit 2 a + 1: the max face; a < 2) is a plane of
-// symmetry: it has no particles (the water's and the other walls' mirror images stand there, fluid/ghosts.hpp), and
-// the inside runs on through it, so that the floor and the other sides meet it with the normals of faces, not edges.
+// symmetry: it has no particles beyond it (the water's and the other walls' mirror images stand there,
+// fluid/ghosts.hpp), and the inside runs on through it, so that the floor and the other sides meet it with the normals
+// of faces, not edges. A lattice point on it (the fcc lattice is moved to put a plane there: cases/build_geometry_3d.cpp)
+// is its own image: inside, it is the water's; in the floor or a side, the wall's.
+// The lattice is moved by `offset` (fluid/lattice.hpp: for_each_lattice_point).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -32,7 +35,8 @@ inline bool inside_tank(const Vec<3>& p, const Vec<3>& lo, const Vec<3>& hi, dou
 inline unsigned tank_side_bit(int axis, bool max_face) { return 1u << (2 * axis + (max_face ? 1 : 0)); }
 
 inline std::vector<BoundaryPointOf<3>> tank_boundary(LatticeKind kind, const Vec<3>& lo, const Vec<3>& hi, double dp,
-                                                     int layers, double depth, unsigned mirror_sides = 0) {
+                                                     int layers, double depth, unsigned mirror_sides = 0,
+                                                     const Vec<3>& offset = Vec<3>::Zero()) {
   for (int a = 0; a < 3; ++a)
     if (!(hi[a] > lo[a])) throw std::invalid_argument("a tank's max must exceed its min along every axis");
   if (kind == LatticeKind::square && layers < 1) throw std::invalid_argument("a tank needs at least one boundary layer");
@@ -41,9 +45,14 @@ inline std::vector<BoundaryPointOf<3>> tank_boundary(LatticeKind kind, const Vec
   Vec<3> box_lo = lo - Vec<3>::Constant(thickness), box_hi = hi + Vec<3>::Constant(thickness);
   box_hi[2] = hi[2];  // the sides end at the tank's top
   const auto mirror = [&](int a, bool max_face) { return (mirror_sides & tank_side_bit(a, max_face)) != 0; };
+  Vec<3> inside_lo = lo, inside_hi = hi;  // the inside, closed on the planes of symmetry
+  for (int a = 0; a < 2; ++a) {
+    if (mirror(a, false)) inside_lo[a] -= 2.0 * eps;
+    if (mirror(a, true)) inside_hi[a] += 2.0 * eps;
+  }
   std::vector<BoundaryPointOf<3>> out;
-  for_each_lattice_point(kind, dp, box_lo, box_hi, [&](const Vec<3>& p) {
-    if (p[2] > hi[2] + eps || p[2] < box_lo[2] - eps || inside_tank(p, lo, hi, eps)) return;
+  const auto visit = [&](const Vec<3>& p) {
+    if (p[2] > hi[2] + eps || p[2] < box_lo[2] - eps || inside_tank(p, inside_lo, inside_hi, eps)) return;
     for (int a = 0; a < 2; ++a)  // beyond a plane of symmetry: its mirror images' place (a point on it is its own)
       if ((mirror(a, false) && p[a] < lo[a] - eps) || (mirror(a, true) && p[a] > hi[a] + eps)) return;
     Vec<3> nearest = p;  // the nearest point of the inside, open above and through the planes of symmetry
@@ -59,13 +68,14 @@ inline std::vector<BoundaryPointOf<3>> tank_boundary(LatticeKind kind, const Vec
       out.push_back({p, to_inside / to_inside.norm(), to_inside.norm(), std::max(0, layer)});
       return;
     }
-    Vec<3> normal = Vec<3>::Zero();  // on a face: its inward normal
+    Vec<3> normal = Vec<3>::Zero();  // on a face: its inward normal (a plane of symmetry is none)
     for (int a = 0; a < 3; ++a)
-      if (std::abs(p[a] - lo[a]) <= eps) normal[a] += 1.0;
+      if (std::abs(p[a] - lo[a]) <= eps && (a == 2 || !mirror(a, false))) normal[a] += 1.0;
     for (int a = 0; a < 2; ++a)
-      if (std::abs(p[a] - hi[a]) <= eps) normal[a] -= 1.0;
+      if (std::abs(p[a] - hi[a]) <= eps && !mirror(a, true)) normal[a] -= 1.0;
     out.push_back({p, normal.normalized(), 0.0, 0});
-  });
+  };
+  for_each_lattice_point(kind, dp, box_lo, box_hi, visit, offset);
   return out;
 }
 

@@ -3,6 +3,7 @@
 // planes and on one; and a quarter of a symmetric tank, with a floating box on its corner, that evolves as the whole
 // tank does (the square lattice and the box's particles are mirror-symmetric about the planes, so the quarter's
 // particles are the whole's at the same places).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -76,17 +77,22 @@ TEST(MirrorGhosts, AParticleGetsAnImageAcrossEachNearPlaneAndBoth) {
 
 // A tank [-W, W]^2 x H whole, and its quarter [0, W]^2 with the sides x = 0 and y = 0 as planes of symmetry; water on
 // the square lattice to 0.05 m and, when asked, a floating box on the axis (density 500, free to heave only).
-std::string tank(bool quarter, bool with_box) {
-  const std::string lo = quarter ? "[0, 0, 0]" : "[-0.06, -0.06, 0]";
+// On the fcc lattice both are moved by c = s/2 across x and y (s its plane spacing), where the unmoved lattice has a
+// plane: the whole tank's lattice is then mirror-symmetric about x = c and y = c, and the quarter's meets its planes
+// of symmetry there without a move (cases/build_geometry_3d.cpp), so that the two hold the same particles again.
+std::string tank(bool quarter, bool with_box, const std::string& lattice = "square") {
+  const double c = lattice == "fcc" ? 0.5 * fcc_plane_spacing(0.01) : 0.0;
+  const double lo = quarter ? c : c - 0.06, hi = c + 0.06;
+  const auto v = [](double a, double b, double z) { return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", a, b, z); };
   std::string s = "dimension: 3\n"
                   "particle_spacing: 0.01\n"
-                  "lattice: square\n"
+                  "lattice: " + lattice + "\n"
                   "end_time: 0.01\n"
                   "method: {initial_state: lattice}\n"
                   "fluid:\n"
                   "  phases: [{name: water, density: 1000}]\n"
                   "  regions: [{type: below_level, level: 0.05}]\n"
-                  "walls: [{type: tank, min: " + lo + ", max: [0.06, 0.06, 0.2]" +
+                  "walls: [{type: tank, min: " + v(lo, lo, 0) + ", max: " + v(hi, hi, 0.2) +
                   (quarter ? ", symmetry: [x_min, y_min]" : "") + "}]\n";
   if (with_box)
     s += "bodies: [{name: box, shape: {type: box, center: [0, 0, 0.05], size: [0.04, 0.04, 0.04]}, density: 500, "
@@ -103,9 +109,9 @@ Place place_of(const Vec<3>& x) {
 // Every particle of the quarter is the whole tank's particle at its place: same kind, number density and pressure
 // (to rounding: the sums run in another order), and after 300 steps of 1e-4 s (with the neighbour lists and ghosts rebuilt on the way) the same
 // position and velocity.
-void expect_quarter_is_the_whole(bool with_box) {
-  const auto whole = cases::build_scene<3>(cases::load_scene_text(tank(false, with_box), {}), "w");
-  const auto quarter = cases::build_scene<3>(cases::load_scene_text(tank(true, with_box), {}), "q");
+void expect_quarter_is_the_whole(bool with_box, const std::string& lattice = "square") {
+  const auto whole = cases::build_scene<3>(cases::load_scene_text(tank(false, with_box, lattice), {}), "w");
+  const auto quarter = cases::build_scene<3>(cases::load_scene_text(tank(true, with_box, lattice), {}), "q");
   auto& W = *whole->simulation;
   auto& Q = *quarter->simulation;
   const auto match = [&](const char* when) {
@@ -129,22 +135,30 @@ void expect_quarter_is_the_whole(bool with_box) {
     EXPECT_GT(matched, PW.real_count() / 5) << when;
   };
   match("at the start");
+  // The whole holds each of the quarter's fluid particles and its images: four, two on a plane (fcc), one on both.
+  const double c = lattice == "fcc" ? 0.5 * fcc_plane_spacing(0.01) : 0.0;
   std::size_t quarter_fluid = 0, whole_fluid = 0;
-  for (std::size_t i = 0; i < Q.particles().real_count(); ++i) quarter_fluid += Q.particles().kind[i] == Kind::fluid;
+  for (std::size_t i = 0; i < Q.particles().real_count(); ++i) {
+    const Vec<3>& x = Q.particles().position[i];
+    if (Q.particles().kind[i] == Kind::fluid)
+      quarter_fluid += (std::abs(x[0] - c) < 1e-12 ? 1 : 2) * (std::abs(x[1] - c) < 1e-12 ? 1 : 2);
+  }
   for (std::size_t i = 0; i < W.particles().real_count(); ++i) whole_fluid += W.particles().kind[i] == Kind::fluid;
-  EXPECT_EQ(4 * quarter_fluid, whole_fluid);
+  EXPECT_EQ(quarter_fluid, whole_fluid);
   // A flow towards the axis, mirror-symmetric, that moves the water across the planes' neighbourhoods (and rebuilds
   // the lists): v = -u (x, y, 0) / W.
   for (Simulation<3>* sim : {&W, &Q}) {
     auto& P = sim->particles();
     for (std::size_t i = 0; i < P.real_count(); ++i)
-      if (P.kind[i] == Kind::fluid) P.velocity[i] = -0.3 / 0.06 * Vec<3>(P.position[i][0], P.position[i][1], 0.0);
+      if (P.kind[i] == Kind::fluid)
+        P.velocity[i] = -0.3 / 0.06 * Vec<3>(P.position[i][0] - c, P.position[i][1] - c, 0.0);
     copy_to_ghosts(P, P.velocity);
   }
   const long rebuilds_before = Q.neighbor_rebuilds();
   for (int s = 0; s < 300; ++s) {
-    ASSERT_FALSE(W.step(1e-4, TimeStepLimit::dt_max).has_value());
-    ASSERT_FALSE(Q.step(1e-4, TimeStepLimit::dt_max).has_value());
+    const auto w = W.step(1e-4, TimeStepLimit::dt_max), q = Q.step(1e-4, TimeStepLimit::dt_max);
+    ASSERT_FALSE(w.has_value()) << "whole, step " << s << ": " << w->reason;
+    ASSERT_FALSE(q.has_value()) << "quarter, step " << s << ": " << q->reason;
   }
   EXPECT_GE(Q.neighbor_rebuilds(), rebuilds_before + 2);  // the ghosts were made afresh on the way
   match("after 300 steps");
@@ -159,6 +173,7 @@ void expect_quarter_is_the_whole(bool with_box) {
 
 TEST(MirrorGhosts, AQuarterTankEvolvesAsTheWholeOne) { expect_quarter_is_the_whole(false); }
 TEST(MirrorGhosts, AQuarterBoxOnTheAxisHeavesAsTheWholeOne) { expect_quarter_is_the_whole(true); }
+TEST(MirrorGhosts, AQuarterTankOnTheFccLatticeEvolvesAsTheWholeOne) { expect_quarter_is_the_whole(false, "fcc"); }
 
 }  // namespace
 }  // namespace slide

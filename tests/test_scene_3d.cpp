@@ -1,7 +1,11 @@
 // 3-D scenes (dimension: 3): what they build, counted by hand, and what they refuse, naming the key.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
+#include <set>
+#include <tuple>
 
 #include <string>
 
@@ -59,6 +63,62 @@ TEST(Scene3D, FccTankHoldsTheLatticePointsInsideIt) {
     for (std::size_t j = 0; j < P.size(); ++j)
       if (P.kind[i] == Kind::fluid && P.kind[j] != Kind::fluid) closest = std::min(closest, (P.position[i] - P.position[j]).norm());
   EXPECT_NEAR(closest, nearest_spacing(LatticeKind::fcc, 0.01), 1e-12);
+}
+
+// Planes of symmetry on the fcc lattice pass through one of its planes (cases/build_geometry_3d.cpp): the lattice is
+// moved by s/2 across x and y to put one on x = 0 and on y = 0 (the tank's corner at the origin lies midway between
+// two), its points there are the water's and the walls' (their own images), and the particles with their mirror
+// images are one fcc lattice, each site once: no stacking fault (images 0.794 dp across from their sources).
+TEST(Scene3D, FccLatticeMeetsItsPlanesOfSymmetryThroughOneOfItsPlanes) {
+  const std::string text = tank_scene("fcc");
+  const std::string quarter = std::regex_replace(text, std::regex("max: \\[0.1, 0.1, 0.2\\]\\}"),
+                                                 "max: [0.1, 0.1, 0.2], symmetry: [x_min, y_min]}");
+  ASSERT_NE(quarter, text);
+  const auto scene = build_scene<3>(load_scene_text(quarter, {}), "s");
+  const double dp = 0.01, s = fcc_plane_spacing(dp);
+  EXPECT_NEAR(scene->lattice_offset[0], 0.5 * s, 1e-15);
+  EXPECT_NEAR(scene->lattice_offset[1], 0.5 * s, 1e-15);
+  EXPECT_EQ(scene->lattice_offset[2], 0.0);
+  // Water at x = m s and y = n s, m, n = 0..12 (13 s > 0.1 m), z = (k + 1/2) s, k = 0..12, m + n + k even.
+  EXPECT_EQ(scene->fluid_count, std::size_t((13 * 13 * 13 + 1) / 2));
+  const auto& P = scene->simulation->particles();
+  std::vector<Vec<3>> sites;
+  std::size_t water_on_a_plane = 0, walls_on_a_plane = 0;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    const Vec<3>& x = P.position[i];
+    ASSERT_GE(x[0], -1e-12);
+    ASSERT_GE(x[1], -1e-12);
+    const bool on = std::abs(x[0]) < 1e-12 || std::abs(x[1]) < 1e-12;
+    (P.kind[i] == Kind::fluid ? water_on_a_plane : walls_on_a_plane) += on;
+    for (int flip = 0; flip < 4; ++flip) {  // the particle and its images across x = 0, y = 0 and both
+      const Vec<3> y((flip & 1) ? -x[0] : x[0], (flip & 2) ? -x[1] : x[1], x[2]);
+      if (((flip & 1) && std::abs(x[0]) < 1e-12) || ((flip & 2) && std::abs(x[1]) < 1e-12)) continue;  // itself
+      sites.push_back(y);
+    }
+  }
+  // On x = 0: n + k even, 85 of 13 x 13; on y = 0 as many; on their line, k even: 7.
+  EXPECT_EQ(water_on_a_plane, std::size_t(85 + 85 - 7));
+  EXPECT_GT(walls_on_a_plane, 0u);
+  // Every site on the lattice moved by (s/2, s/2, 0) (mirror images too), and none twice.
+  std::set<std::tuple<long, long, long>> seen;
+  for (const Vec<3>& y : sites) {
+    const Vec<3> q = (y - scene->lattice_offset) / s - Vec<3>::Constant(0.5);
+    const long i = std::lround(q[0]), j = std::lround(q[1]), k = std::lround(q[2]);
+    ASSERT_NEAR((q - Vec<3>(i, j, k)).norm(), 0.0, 1e-9) << y.transpose();
+    ASSERT_EQ(((i + j + k) % 2 + 2) % 2, 0) << "off the fcc lattice: " << y.transpose();
+    EXPECT_TRUE(seen.insert({i, j, k}).second) << "a site twice: " << y.transpose();
+  }
+}
+
+// Two planes of symmetry across one axis on the fcc lattice must both pass through its planes: 0.1 m apart is 12.6
+// plane spacings, refused naming the second; 12 spacings apart is taken.
+TEST(Scene3D, RefusesFccPlanesOfSymmetryNotWholePlaneSpacingsApart) {
+  const auto with = [](const std::string& max_x) {
+    return std::regex_replace(tank_scene("fcc"), std::regex("max: \\[0.1, 0.1, 0.2\\]\\}"),
+                              "max: [" + max_x + ", 0.1, 0.2], symmetry: [x_min, x_max]}");
+  };
+  EXPECT_EQ(refusal_key(with("0.1")), "walls[0].symmetry[1]");
+  EXPECT_EQ(refusal_key(with(fmt::format("{:.17g}", 12 * fcc_plane_spacing(0.01)))), "(accepted)");
 }
 
 TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
