@@ -31,11 +31,11 @@ std::tuple<long, long, long> lattice_index(const SceneBuild<3>& b, const Vec<3>&
 
 // On the fcc lattice a plane of symmetry must pass through one of the lattice's planes: then its particles are their
 // own images and the images of the planes beside it are the lattice's next planes (A B A). A plane midway between two
-// (B | A) puts A's images where B belongs, a second A 0.794 dp straight across from A: a stacking fault, which stirred
-// still water to 6.4 % of sqrt(g H) (hydrostatic_3d with a plane, stop 44; docs/three-d.md). So the lattice is moved
-// along each plane's axis to meet it (two planes on one axis must then lie a whole number of plane spacings apart). On
-// the square lattice the planes lie midway between planes, on multiples of dp (check_on_the_cubic_lattice), where the
-// images continue the lattice: no move.
+// (B | A) puts A's images where B belongs, a second A 0.794 dp straight across from A: a stacking fault (stop 44,
+// docs/three-d.md). So the lattice is moved along each plane's axis to meet it; two planes on one axis must then lie a
+// whole number of plane spacings apart, to the billionth of dp within which a point counts as on a plane (and gets no
+// image). On the square lattice the planes lie midway between planes, on multiples of dp
+// (check_on_the_cubic_lattice), where the images continue the lattice: no move.
 Vec<3> lattice_offset_for_planes(const SceneBuild<3>& b) {
   Vec<3> offset = Vec<3>::Zero();
   if (b.sim->options.lattice != LatticeKind::fcc) return offset;
@@ -49,12 +49,13 @@ Vec<3> lattice_offset_for_planes(const SceneBuild<3>& b) {
       offset[m.axis] = move;
       continue;
     }
-    const double apart = (m.at - first[m.axis]->mirror().at) / s;
-    if (std::abs(apart - std::round(apart)) > 1e-6)
+    const double from = first[m.axis]->mirror().at, apart = (m.at - from) / s;
+    const double nearest = from + std::round(apart) * s;  // m, the lattice's plane nearest to this one
+    if (std::abs(m.at - nearest) > 1e-9 * b.dp)
       throw SceneError(plane.key, fmt::format("on the fcc lattice a plane of symmetry passes through one of the "
-                                              "lattice's planes, {:.9g} m apart across {}; this one lies {:.6g} of them "
-                                              "from {}: make it a whole number",
-                                              s, "xyz"[m.axis], apart, first[m.axis]->key));
+                                              "lattice's planes, {:.12g} m apart across {}; this one lies {:.9g} of "
+                                              "them from {}: put it at {:.12g} m",
+                                              s, "xyz"[m.axis], apart, first[m.axis]->key, nearest));
   }
   return offset;
 }
@@ -173,7 +174,8 @@ void build_walls(SceneBuild<3>& b) {
     if (wn["type"].as<std::string>() == "terrain") continue;  // after the tanks (build_terrain)
     const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]);
     if (b.sim->options.lattice == LatticeKind::square) check_on_the_cubic_lattice(lo, hi, b.dp, w);
-    // Sides of symmetry have no particles: the mirror images of what stands near them take their place.
+    // Sides of symmetry have no particles beyond them (the mirror images of what stands near them take their place);
+    // on the fcc lattice those on one are their own images.
     unsigned mirror_sides = 0;
     for (std::size_t f = 0; f < wn["symmetry"].size(); ++f) {
       const std::string side = wn["symmetry"][f].as<std::string>();
