@@ -22,7 +22,8 @@
 namespace slide {
 
 // What a stage's neighbours read beyond the motion: each is one per-particle array carried to the ghosts. `motion` is
-// position (the ghost's image of it), velocity and acceleration, which every stage that moves particles changes;
+// position (the ghost's image of it), velocity and acceleration, which every stage that moves particles changes (and
+// the owned particles on a plane of symmetry are first held on it: fluid/ghosts.hpp, hold_on_planes);
 // `wall_normal` turns with a body.
 enum class HaloField {
   motion,
@@ -62,6 +63,7 @@ class Domain {
   // After a re-sort: ghosts afresh for the owned particles within `depth` (the neighbour list's radius) of the
   // period's ends and the planes of symmetry. Returns whether there are any.
   bool make_ghosts(double depth) {
+    ghost_depth_ = depth;
     if (layout_.any()) add_ghosts(particles, layout_, depth);
     return particles.ghost_count() != 0;
   }
@@ -98,7 +100,10 @@ class Domain {
   void refresh(HaloField f) {
     auto& P = particles;
     switch (f) {
-      case HaloField::motion: sync_ghost_motion(P); return;
+      case HaloField::motion:
+        hold_on_planes(P, layout_.mirrors, ghost_depth_);  // before its images are placed from it
+        sync_ghost_motion(P);
+        return;
       case HaloField::velocity: copy_to_ghosts(P, P.velocity); return;
       case HaloField::number_density: copy_to_ghosts(P, P.number_density); return;
       case HaloField::pressure: copy_to_ghosts(P, P.pressure); return;
@@ -111,6 +116,7 @@ class Domain {
   }
 
   GhostLayout layout_;
+  double ghost_depth_ = 0.0;  // the depth of the last make_ghosts
 };
 
 }  // namespace slide
