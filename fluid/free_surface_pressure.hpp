@@ -30,8 +30,10 @@ inline std::string_view to_string(SurfacePressure s) { return surface_pressure_n
 // the top layer's push on it, and that loop drives the water column's acoustic mode. Measured on still water 0.159 m
 // deep in a 0.2 m x 0.2 m tank (fcc, dp 0.01, settled 2 s at damping 3 /s), mean fluid speed 0.06 / 0.3 / 0.6 s after
 // the start: extrapolated 1.1e-2 / 2.0e-2 / 2.4e-2 m/s (largest 0.18 m/s) and growing; zero 1.5e-3 / 1.6e-3 /
-// 1.9e-3 m/s; half_layer 3.3e-4 / 2.5e-4 / 2.2e-4 m/s (largest 1.2e-3 m/s). Its limit is extrapolated's: the head is
-// that of water at rest under a level surface.
+// 1.9e-3 m/s; half_layer 3.3e-4 / 2.5e-4 / 2.2e-4 m/s (largest 1.2e-3 m/s). That was at c0 = 10 sqrt(g H) and holds
+// for that tank only: in others half_layer rings at 10 and extrapolated does not; at the 3-D default c0 (20 sqrt(g H))
+// neither rings (docs/three-d.md). Its limit is extrapolated's: the head is that of water at rest under a level
+// surface.
 inline double half_layer_pressure(double density, double gravity, double layer_thickness) {
   return 0.5 * density * gravity * layer_thickness;
 }

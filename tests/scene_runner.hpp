@@ -17,10 +17,12 @@ namespace slide::testing {
 inline constexpr double g = 9.81;  // m/s^2, the test scenes' gravity
 
 // The scene of `yaml`, written to a fresh folder named `name`.
-inline std::unique_ptr<cases::Scene<2>> build_scene_text(const std::string& name, const std::string& yaml) {
+template <int D = 2>
+std::unique_ptr<cases::Scene<D>> build_scene_text(const std::string& name, const std::string& yaml,
+                                                  const std::vector<std::string>& overrides = {}) {
   const auto dir = fresh_directory(name);
   write_file(dir / "s.yaml", yaml);
-  return cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), name);
+  return cases::build_scene<D>(cases::load_scene(dir / "s.yaml", overrides), name);
 }
 
 template <int D = 2>

@@ -1,7 +1,7 @@
 // The 3-D dam break (cases/dam_break_3d.yaml): the Martin & Moyce column in a tank 6 particles across with free-slip
 // walls is the 2-D case's flow, so its front stays within 2 % of the 2-D run's at the same spacing and the same method
-// (free-slip walls, extrapolated wall pressure) over T <= 3 (issue 31), and within the 2-D test's bound (12 %,
-// tests/test_dam_break.cpp) of the experiment.
+// (free-slip walls, extrapolated wall pressure, c0 = 10 sqrt(g H)) over T <= 3 (issue 31), and within the 2-D test's
+// bound (12 %, tests/test_dam_break.cpp) of the experiment.
 #include <gtest/gtest.h>
 
 #include <cmath>
