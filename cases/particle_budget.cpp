@@ -29,17 +29,22 @@ namespace slide::cases {
 // more for the scatter of small runs, which 5 % of a few MB does not cover: the dam break at end_time 0.02 peaked 3 kB
 // above its estimate in one of two runs at stop 42 (20.283 MB against 20.281 MB; in the other 20.1 MB against 20.4 MB:
 // the peak and the program's own at its start each move by 0.2 MB from run to run).
-// In 3-D the same sum is taken 1.9 times: measured at stop 39, the peaks above the program's own were 1.74 (the
-// narrow dam break, 72,696 particles, square lattice) and 1.88 (the still tank at dp 0.005, 52,322 particles, fcc)
-// times the 2-D sum (three-component vectors and 3 x 3 matrices, and a boundary particle's mirror neighbourhood of about
-// 40 particles where it is 13 in 2-D); 1.9 errs on the safe side. A model of its own in 3-D is left for later.
+// In 3-D (measured at stop 48, the same short runs of the six 3-D cases at their spacing and a coarser one, 2 threads:
+// 3,768 to 1,150,900 particles, 42 to 64 listed neighbours a particle), 370 B a particle where 2-D has 310 (three
+// components in every vector of the particles, the last good state and the step's copies), the same 12 B a listed
+// neighbour, 230 B more with snapshots (100 in 2-D: three-component positions and velocities gathered and padded),
+// and up to 20 doubles a body a step in Bullet's journal (a 3-D force and torque, the step, a velocity while
+// settling). The estimate then lay 2.7 % (Enet & Grilli at dp 0.045) to 11.8 % (the narrow dam break) above the
+// peaks. (Before, the 2-D sum taken 1.9 times, from stop 39's first 3-D code, lay 46-90 % above them.) A non-Newtonian
+// phase's solver vectors are taken 1.5 times the 2-D 80 B, not measured: no 3-D case has one yet.
 double run_memory_bytes(const RunMemoryInputs& in) {
-  const double per_particle = 310.0 + 12.0 * in.listed_per_particle + (in.snapshots ? 100.0 : 0.0) +
-                              (in.non_newtonian ? 80.0 : 0.0);
+  const bool three_d = in.dimension == 3;
+  const double per_particle = (three_d ? 370.0 : 310.0) + 12.0 * in.listed_per_particle +
+                              (in.snapshots ? (three_d ? 230.0 : 100.0) : 0.0) +
+                              (in.non_newtonian ? (three_d ? 120.0 : 80.0) : 0.0);
   const double fixed = (in.snapshots ? 7.0e6 : 3.5e6) + (in.bodies_or_slides ? 1.0e6 : 0.0) + 0.5e6;
-  const double journal = 2.0 * 12.0 * sizeof(double) * in.body_steps;
-  const double three_d = in.dimension == 3 ? 1.9 : 1.0;
-  return 1.05 * three_d * (fixed + in.particles * per_particle + journal);
+  const double journal = 2.0 * (three_d ? 20.0 : 12.0) * sizeof(double) * in.body_steps;
+  return 1.05 * (fixed + in.particles * per_particle + journal);
 }
 
 double particle_state_bytes(double n, int dimension) {

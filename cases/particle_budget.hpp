@@ -15,7 +15,7 @@ struct RunMemoryInputs {
   bool bodies_or_slides = false;     // rigid bodies (Bullet) or deformable slides
   bool non_newtonian = false;        // a phase with a rheology: the semi-implicit viscosity's vectors
   double body_steps = 0.0;           // rigid bodies x the steps of the settling and the run (Bullet's journal)
-  int dimension = 2;                 // 3: the 3-D factor (particle_budget.cpp)
+  int dimension = 2;                 // 3: the 3-D constants (particle_budget.cpp)
 };
 
 // The run's peak resident memory above the program's own (program_resident_bytes), bytes: fixed parts, per-particle
