@@ -97,7 +97,8 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
   std::map<std::array<long, 2>, std::vector<std::size_t>> body_particles_in_cell;
   if (apply && std::isfinite(capped_surface))
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.body_frame[i] >= 0) body_particles_in_cell[{cell_of(P.position[i], 0, dp), cell_of(P.position[i], 1, dp)}].push_back(i);
+      if (P.body_frame[i] >= 0)
+        body_particles_in_cell[{cell_of(P.position[i], 0, dp), cell_of(P.position[i], 1, dp)}].push_back(i);
   std::vector<std::size_t> candidates;
   auto body_particles_near = [&](const Vec<D>& x) -> const std::vector<std::size_t>& {
     candidates.clear();
