@@ -81,8 +81,17 @@ std::optional<SlideShapesSpec> read_slide_shapes(const std::filesystem::path& sc
 }
 
 OutputSpec read_output(const YAML::Node& on) {
-  return {on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>(),
-          on["checkpoint_interval"].as<double>()};
+  OutputSpec spec{on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>(),
+                  on["checkpoint_interval"].as<double>()};
+  for (const auto& field : on["snapshot_fields"]) {
+    const std::string name = field.as<std::string>();
+    if (std::find(spec.snapshot_fields.begin(), spec.snapshot_fields.end(), name) != spec.snapshot_fields.end())
+      throw SceneError("output.snapshot_fields", "'" + name + "' is listed twice");
+    spec.snapshot_fields.push_back(name);
+  }
+  spec.snapshot_single_precision = on["snapshot_precision"].as<std::string>() == "single";
+  spec.snapshot_deflate = on["snapshot_compression"].as<std::string>() == "deflate";
+  return spec;
 }
 
 }  // namespace

@@ -61,6 +61,9 @@ struct OutputSpec {
   double snapshot_interval = 0.0;  // s; 0 = first and last only
   double gauge_interval = 0.0;     // s
   double checkpoint_interval = 0.0;  // s of simulated time between checkpoints (tools/checkpoint.hpp); 0 = none
+  std::vector<std::string> snapshot_fields;  // besides position, kind and id; all of them where the scene gives none
+  bool snapshot_single_precision = false;
+  bool snapshot_deflate = true;
 };
 
 // What `slide check` reports about a body: mass and inertia from the outline beside the same sums over a dp

@@ -7,6 +7,7 @@
 #include "cases/initial_state.hpp"
 #include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
+#include "cases/snapshot_field_names.hpp"
 #include "cases/viscous_scheme_choice.hpp"
 #include "cases/wall_side.hpp"
 #include "coupling/rigid_bodies.hpp"
@@ -248,6 +249,16 @@ Schema output_schema() {
       "what is written to the output folder",
       {{"snapshots", S::boolean("write particle snapshots (particles.h5, particles.xdmf)", true)},
        {"snapshot_interval", S::number("time between snapshots; 0 = first and last only", "s", 0.0, 0.0, S::inf)},
+       {"snapshot_fields",
+        S::list("what a snapshot holds besides position, kind and id; [] (the default) all of them",
+                S::choice("field", snapshot_field_names(), std::nullopt))},
+       {"snapshot_precision",
+        S::choice("double: 64-bit floats; single: 32-bit positions, velocities and scalars (half the bytes)",
+                  {"double", "single"}, std::string("double"))},
+       {"snapshot_compression",
+        S::choice("deflate: lossless, HDF5's byte shuffle and deflate level 1 in chunks (a snapshot of 96 k "
+                  "particles 82 -> 37 B a particle; docs/outputs.md); none: contiguous datasets",
+                  {"deflate", "none"}, std::string("deflate"))},
        {"gauge_interval", S::number("time between gauge and diagnostic samples (gauges.csv, surge_front.csv, "
                                     "slide_front.csv, velocity_profile.csv)", "s", 0.005, 0.0, S::inf, true, false)},
        {"slide_outline_times", S::vector("times of the deformable slides' upper surfaces in slide_outline.csv, each "

@@ -70,9 +70,10 @@ void expect_one_line_for_a_failed_snapshot(const CommandResult& r, const std::st
 
 TEST(Faults, ASnapshotPastTheFileSizeLimitIsOneLineAndHdf5sStackGoesToItsLog) {
   const auto dir = fresh_directory("hdf5_file_size_limit");
-  // A snapshot at dp 0.005 is some 600 kB: the first one passes 50 kB.
+  // A snapshot at dp 0.005 is some 600 kB uncompressed: the first one passes 50 kB (deflated, it does not).
   const auto r = run_command("bash -c 'ulimit -f 50; " + slide_binary() + " run " + kDamBreak +
-                             " --quiet --threads 1 --set end_time=0.01 --set particle_spacing=0.005 --out " +
+                             " --quiet --threads 1 --set end_time=0.01 --set particle_spacing=0.005"
+                             " --set output.snapshot_compression=none --out " +
                              (dir / "run").string() + "'");
   expect_one_line_for_a_failed_snapshot(r, "File too large", dir / "run");
   const std::string log = read_file(dir / "run" / "hdf5_errors.log");

@@ -186,6 +186,84 @@ std::string run_capture(const std::string& cmd) {
 
 }  // namespace
 
+
+// The filters of a dataset: (count, whether shuffle and deflate are among them).
+std::pair<int, bool> dataset_filters(hid_t file, const std::string& name) {
+  H5Closer ds{H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose};
+  H5Closer dcpl{H5Dget_create_plist(ds.id), H5Pclose};
+  const int n = H5Pget_nfilters(dcpl.id);
+  bool shuffle = false, deflate = false;
+  for (int k = 0; k < n; ++k) {
+    unsigned flags = 0, config = 0;
+    size_t cd_count = 0;
+    const H5Z_filter_t f = H5Pget_filter2(dcpl.id, unsigned(k), &flags, &cd_count, nullptr, 0, nullptr, &config);
+    shuffle = shuffle || f == H5Z_FILTER_SHUFFLE;
+    deflate = deflate || f == H5Z_FILTER_DEFLATE;
+  }
+  return {n, shuffle && deflate};
+}
+
+// The default format deflates every dataset (shuffle + deflate) and keeps the values exactly; `none` writes them
+// contiguous. The values read back are the same either way.
+TEST(SnapshotWriter, DeflatedSnapshotsHoldTheSameValues) {
+  for (const bool deflate : {true, false}) {
+    TempDir dir(deflate ? "snap_deflate" : "snap_plain");
+    const Snap s = make_snap(3, 70000, 0.25);  // more rows than one chunk (32768)
+    {
+      slide::tools::SnapshotFormat format;
+      format.deflate = deflate;
+      SnapshotWriter w(dir.path, {}, true, format);
+      w.write(0.5, 9, s.fields());
+    }
+    H5Closer master{H5Fopen((dir.path / "particles.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+    ASSERT_GE(master.id, 0);
+    expect_snapshot(master.id, 0, s, 0.5, 9);
+    for (const char* name : {"position", "velocity", "pressure", "phase", "kind", "id", "connectivity"}) {
+      const auto [count, shuffled_and_deflated] = dataset_filters(master.id, std::string("snapshots/000000/") + name);
+      EXPECT_EQ(count, deflate ? 2 : 0) << name;
+      EXPECT_EQ(shuffled_and_deflated, deflate) << name;
+    }
+  }
+}
+
+// output.snapshot_fields and snapshot_precision: only the fields asked for (position, kind and id always), in the
+// HDF5 file and the XDMF, and reals as 32-bit floats holding the values rounded to float.
+TEST(SnapshotWriter, AFormatWritesTheChosenFieldsInSinglePrecision) {
+  TempDir dir("snap_format");
+  const Snap s = make_snap(2, 6, 1.5);
+  slide::tools::SnapshotFormat format;
+  format.fields = {"pressure"};
+  format.single_precision = true;
+  {
+    SnapshotWriter w(dir.path, {"0 fluid", "0 water", "slide test"}, true, format);
+    w.write(0.0, 0, s.fields());
+  }
+  H5Closer master{H5Fopen((dir.path / "particles.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  ASSERT_GE(master.id, 0);
+  const std::string base = "snapshots/000000/";
+  for (const char* absent : {"velocity", "number_density", "density", "phase"})
+    EXPECT_LE(H5Lexists(master.id, (base + absent).c_str(), H5P_DEFAULT), 0) << absent;
+  const auto pressure = read_dataset<float>(master.id, base + "pressure", H5T_NATIVE_FLOAT);
+  ASSERT_EQ(pressure.size(), 6u);
+  for (size_t i = 0; i < 6; ++i) EXPECT_EQ(pressure[i], static_cast<float>(s.pressure[i]));
+  const auto position = read_dataset<float>(master.id, base + "position", H5T_NATIVE_FLOAT);
+  ASSERT_EQ(position.size(), 18u);
+  for (size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(position[i * 3], static_cast<float>(s.position[i * 2]));
+    EXPECT_EQ(position[i * 3 + 1], static_cast<float>(s.position[i * 2 + 1]));
+    EXPECT_EQ(position[i * 3 + 2], 0.0f);
+  }
+  EXPECT_EQ(read_dataset<uint32_t>(master.id, base + "id", H5T_NATIVE_UINT32), s.id);
+  EXPECT_EQ(read_dataset<uint8_t>(master.id, base + "kind", H5T_NATIVE_UINT8), s.kind);
+  const std::string xdmf = read_text(dir.path / "particles.xdmf");
+  EXPECT_EQ(count_occurrences(xdmf, "<Attribute "), 3u);  // pressure, kind, id
+  EXPECT_EQ(xdmf.find("velocity"), std::string::npos);
+  EXPECT_NE(xdmf.find("Precision=\"4\" Format=\"HDF\">snapshots/snapshot_000000.h5:/position"), std::string::npos);
+  EXPECT_NE(xdmf.find("Precision=\"4\" Format=\"HDF\">snapshots/snapshot_000000.h5:/pressure"), std::string::npos);
+  format.fields = {"speed"};
+  EXPECT_THROW(SnapshotWriter(dir.path / "other", {}, true, format), std::invalid_argument);
+}
+
 TEST(AtomicFile, ReplacesContentAndLeavesNoTemporary) {
   TempDir dir("atomic");
   const fs::path p = dir.path / "out.txt";

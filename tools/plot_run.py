@@ -215,12 +215,17 @@ def plot_particles(run, target):
     with h5py.File(path, "r") as f:
         times = list(f["times"][()])
         picked = [(i, times[i]) for i in snapshot_indices(len(times))]
-        frames = []
+        frames, missing = [], set()
         for i, t in picked:
             g = f["snapshots/%06d" % i]
             kind = g["kind"][()]
             dim = int(g.attrs.get("dim", 2))  # positions are stored with three columns in 2-D too
-            frames.append((t, g["position"][()][:, :dim], g["velocity"][()][:, :dim], g["phase"][()], kind))
+            position = g["position"][()][:, :dim]
+            # A snapshot may leave out velocity or phase (output.snapshot_fields): drawn as zero speed, one phase.
+            velocity = g["velocity"][()][:, :dim] if "velocity" in g else np.zeros_like(position)
+            phase = g["phase"][()] if "phase" in g else np.zeros(len(kind), dtype=np.uint8)
+            missing.update(name for name in ("velocity", "phase") if name not in g)
+            frames.append((t, position, velocity, phase, kind))
         kind_codes = f["snapshots/%06d/kind" % picked[0][0]].attrs.get("codes", b"")
     if not frames:
         return
@@ -262,12 +267,12 @@ def plot_particles(run, target):
         colours[~fluid] = "#888888"
         ax = axes[0][col]
         ax.scatter(x[:, 0], x[:, 1], s=size, c=list(colours), linewidths=0)
-        ax.set_title(f"t = {t:.3g} s: phase", fontsize=9)
+        ax.set_title(f"t = {t:.3g} s: phase" + (" (not in the snapshots)" if "phase" in missing else ""), fontsize=9)
         ax = axes[1][col]
         ax.scatter(x[~fluid, 0], x[~fluid, 1], s=size, c="#888888", linewidths=0)
         sc = ax.scatter(x[fluid, 0], x[fluid, 1], s=size, c=np.linalg.norm(v[fluid], axis=1), cmap="viridis",
                         vmin=0.0, vmax=top_speed, linewidths=0)
-        ax.set_title(f"t = {t:.3g} s: speed", fontsize=9)
+        ax.set_title(f"t = {t:.3g} s: speed" + (" (not in the snapshots)" if "velocity" in missing else ""), fontsize=9)
         for a in (axes[0][col], axes[1][col]):
             a.set_aspect("equal")
             a.set_xlim(lo[0], hi[0])

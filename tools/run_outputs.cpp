@@ -122,7 +122,13 @@ std::vector<double> body_row(const RigidBodies<D>& bodies, int b, const typename
 template <int D>
 RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming)
     : scene_(scene), sim_(*scene.simulation) {
-  if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_), !resuming);
+  if (scene.output.snapshots) {
+    SnapshotFormat format;
+    if (!scene.output.snapshot_fields.empty()) format.fields = scene.output.snapshot_fields;
+    format.single_precision = scene.output.snapshot_single_precision;
+    format.deflate = scene.output.snapshot_deflate;
+    snapshots_.emplace(out, snapshot_legend(sim_), !resuming, std::move(format));
+  }
   if (sim_.bodies()) bodies_.emplace(out / "bodies.csv", body_columns<D>());
   if (!scene.gauges.empty()) {
     std::vector<std::string> cols{"time"};

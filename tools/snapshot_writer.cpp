@@ -11,7 +11,9 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "cases/snapshot_field_names.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/markup_escape.hpp"
 
@@ -142,15 +144,26 @@ H5Handle create_file(const std::filesystem::path& path) {
                "cannot create file");
 }
 
-// Writes a contiguous dataset `name` of rank 1 (cols == 0) or 2 (rows x cols).
+// Rows of a deflated dataset's chunk: 32768 rows of a vector are 786 kB in double precision, under HDF5's default
+// chunk cache of 1 MB, and a reader of a few particles inflates no more than that.
+constexpr size_t kChunkRows = 32768;
+
+// Writes a dataset `name` of rank 1 (cols == 0) or 2 (rows x cols): contiguous, or in chunks with HDF5's byte shuffle
+// and deflate at level 1 (the fastest: measured on a 96 k particle snapshot, 0.07 s for 82 -> 37 B a particle).
 void write_dataset(hid_t file, const std::filesystem::path& path, const char* name,
                    hid_t file_type, hid_t mem_type, const void* data, size_t rows,
-                   size_t cols = 0) {
+                   size_t cols = 0, bool deflate = false) {
   hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
   const int rank = cols == 0 ? 1 : 2;
   H5Handle space = check(H5Screate_simple(rank, dims, nullptr), H5Sclose, path,
                          fmt::format("cannot create dataspace for /{}", name));
   H5Handle dcpl = untimed_properties(H5P_DATASET_CREATE, path);
+  if (deflate && rows > 0) {
+    const hsize_t chunk[2] = {static_cast<hsize_t>(std::min(rows, kChunkRows)), static_cast<hsize_t>(cols)};
+    check(H5Pset_chunk(dcpl.get(), rank, chunk), path, fmt::format("cannot chunk /{}", name));
+    check(H5Pset_shuffle(dcpl.get()), path, fmt::format("cannot shuffle /{}", name));
+    check(H5Pset_deflate(dcpl.get(), 1), path, fmt::format("cannot deflate /{} (HDF5 without zlib?)", name));
+  }
   H5Handle ds = check(H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(),
                                  H5P_DEFAULT),
                       H5Dclose, path, fmt::format("cannot create dataset /{}", name));
@@ -216,14 +229,26 @@ constexpr FieldSpec kFieldSpecs[] = {
 
 }  // namespace
 
+const std::vector<std::string>& SnapshotFormat::field_names() { return cases::snapshot_field_names(); }
+
+bool SnapshotFormat::holds(std::string_view field) const {
+  return field == "position" || field == "kind" || field == "id" ||
+         std::find(fields.begin(), fields.end(), field) != fields.end();
+}
+
 std::string SnapshotWriter::snapshot_name(size_t index) { return fmt::format("{:06d}", index); }
 
 std::string SnapshotWriter::snapshot_relative_path(size_t index) {
   return fmt::format("snapshots/snapshot_{:06d}.h5", index);
 }
 
-SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend, bool new_series)
-    : out_dir_(std::move(out_dir)), legend_(std::move(legend)) {
+SnapshotWriter::SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend, bool new_series,
+                               SnapshotFormat format)
+    : out_dir_(std::move(out_dir)), legend_(std::move(legend)), format_(std::move(format)) {
+  const auto& names = SnapshotFormat::field_names();
+  for (const std::string& field : format_.fields)
+    if (std::find(names.begin(), names.end(), field) == names.end())
+      throw std::invalid_argument(fmt::format("snapshot field '{}' is not one of {}", field, fmt::join(names, ", ")));
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / "snapshots", ec);
   if (ec) {
@@ -304,30 +329,39 @@ void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path
     H5Handle file = create_file(tmp);
     const hid_t fid = file.get();
 
-    std::vector<double> xyz(n * 3, 0.0);
-    auto pad = [&](std::span<const double> src) {
+    const bool single = format_.single_precision, deflate = format_.deflate;
+    // Positions, velocities and scalars in the format's precision; a vector padded to three components (XDMF's XYZ).
+    auto write_real = [&](const char* name, std::span<const double> src, size_t cols) {
+      const size_t width = cols == 0 ? 1 : cols, given = cols == 0 ? 1 : d;
+      std::vector<double> values(n * width, 0.0);
       for (size_t i = 0; i < n; ++i)
-        for (size_t k = 0; k < d; ++k) xyz[i * 3 + k] = src[i * d + k];
+        for (size_t k = 0; k < given; ++k) values[i * width + k] = src[i * given + k];
+      if (!single) {
+        write_dataset(fid, tmp, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), n, cols, deflate);
+        return;
+      }
+      const std::vector<float> narrow(values.begin(), values.end());
+      write_dataset(fid, tmp, name, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, narrow.data(), n, cols, deflate);
     };
-    pad(f.position);
-    write_dataset(fid, tmp, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, xyz.data(), n, 3);
-    pad(f.velocity);
-    write_dataset(fid, tmp, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, xyz.data(), n, 3);
-    write_dataset(fid, tmp, "pressure", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, f.pressure.data(), n);
-    write_dataset(fid, tmp, "number_density", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                  f.number_density.data(), n);
-    write_dataset(fid, tmp, "density", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, f.density.data(), n);
-    write_dataset(fid, tmp, "phase", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.phase.data(), n);
-    write_dataset(fid, tmp, "kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.kind.data(), n);
-    write_dataset(fid, tmp, "id", H5T_STD_U32LE, H5T_NATIVE_UINT32, f.id.data(), n);
+    write_real("position", f.position, 3);
+    if (format_.holds("velocity")) write_real("velocity", f.velocity, 3);
+    if (format_.holds("pressure")) write_real("pressure", f.pressure, 0);
+    if (format_.holds("number_density")) write_real("number_density", f.number_density, 0);
+    if (format_.holds("density")) write_real("density", f.density, 0);
+    if (format_.holds("phase"))
+      write_dataset(fid, tmp, "phase", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.phase.data(), n, 0, deflate);
+    write_dataset(fid, tmp, "kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.kind.data(), n, 0, deflate);
+    write_dataset(fid, tmp, "id", H5T_STD_U32LE, H5T_NATIVE_UINT32, f.id.data(), n, 0, deflate);
     std::vector<uint32_t> connectivity(n);
     for (size_t i = 0; i < n; ++i) connectivity[i] = static_cast<uint32_t>(i);
-    write_dataset(fid, tmp, "connectivity", H5T_STD_U32LE, H5T_NATIVE_UINT32, connectivity.data(), n);
+    write_dataset(fid, tmp, "connectivity", H5T_STD_U32LE, H5T_NATIVE_UINT32, connectivity.data(), n, 0, deflate);
 
     write_dataset_attribute(fid, tmp, kPositionSpec.name, "units", kPositionSpec.units);
-    for (const FieldSpec& spec : kFieldSpecs) write_dataset_attribute(fid, tmp, spec.name, "units", spec.units);
+    for (const FieldSpec& spec : kFieldSpecs)
+      if (format_.holds(spec.name)) write_dataset_attribute(fid, tmp, spec.name, "units", spec.units);
     if (!legend_.kind_codes.empty()) write_dataset_attribute(fid, tmp, "kind", "codes", legend_.kind_codes);
-    if (!legend_.phase_codes.empty()) write_dataset_attribute(fid, tmp, "phase", "codes", legend_.phase_codes);
+    if (!legend_.phase_codes.empty() && format_.holds("phase"))
+      write_dataset_attribute(fid, tmp, "phase", "codes", legend_.phase_codes);
     if (!legend_.code.empty()) write_string_attribute(fid, tmp, "code", legend_.code);
 
     const int64_t step64 = step;
@@ -384,6 +418,7 @@ void SnapshotWriter::write_xdmf() const {
   x += "  <Domain>\n";
   x += "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   auto out = std::back_inserter(x);
+  const int real_precision = format_.single_precision ? 4 : 8;
   for (size_t i = 0; i < entries_.size(); ++i) {
     const Entry& e = entries_[i];
     const std::string file = snapshot_relative_path(i);
@@ -399,11 +434,13 @@ void SnapshotWriter::write_xdmf() const {
     fmt::format_to(out,
                    "        <Geometry GeometryType=\"XYZ\">\n"
                    "          <Information Name=\"units\" Value=\"{2}\"/>\n"
-                   "          <DataItem Dimensions=\"{0} 3\" NumberType=\"Float\" Precision=\"8\" "
+                   "          <DataItem Dimensions=\"{0} 3\" NumberType=\"Float\" Precision=\"{3}\" "
                    "Format=\"HDF\">{1}:/position</DataItem>\n"
                    "        </Geometry>\n",
-                   e.n, file, kPositionSpec.units);
+                   e.n, file, kPositionSpec.units, real_precision);
     for (const FieldSpec& spec : kFieldSpecs) {
+      if (!format_.holds(spec.name)) continue;
+      const int precision = std::string_view(spec.number_type) == "Float" ? real_precision : spec.precision;
       const std::string dims =
           std::string_view(spec.xdmf_type) == "Vector" ? fmt::format("{} 3", e.n) : fmt::format("{}", e.n);
       fmt::format_to(out, "        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n", spec.name,
@@ -418,7 +455,7 @@ void SnapshotWriter::write_xdmf() const {
                      "          <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" "
                      "Format=\"HDF\">{}:/{}</DataItem>\n"
                      "        </Attribute>\n",
-                     dims, spec.number_type, spec.precision, file, spec.name);
+                     dims, spec.number_type, precision, file, spec.name);
     }
     x += "      </Grid>\n";
   }

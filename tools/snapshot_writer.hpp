@@ -28,6 +28,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace slide::tools {
@@ -47,10 +48,23 @@ struct SnapshotLegend {
   std::string code;         // the program and its version, e.g. "slide 0.14"
 };
 
+// What a snapshot holds and how it is stored (the scene's output.snapshot_* keys). Position, kind and id are always
+// written (with the XDMF's connectivity); `fields` are the others, by name. Deflate (with HDF5's byte shuffle, level 1,
+// in chunks) is lossless: a snapshot of the Enet & Grilli case (96 k particles) went from 82 to 37 B a particle.
+struct SnapshotFormat {
+  static const std::vector<std::string>& field_names();  // velocity, pressure, number_density, density, phase
+  std::vector<std::string> fields = field_names();
+  bool single_precision = false;  // positions, velocities and the scalars as 32-bit floats
+  bool deflate = true;
+  bool holds(std::string_view field) const;
+};
+
 class SnapshotWriter {
  public:
-  // Creates out_dir and out_dir/snapshots if needed, and starts a new series (below).
-  explicit SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend = {}, bool new_series = true);
+  // Creates out_dir and out_dir/snapshots if needed, and starts a new series (below). Throws std::invalid_argument on
+  // a field name that is not one of SnapshotFormat::field_names().
+  explicit SnapshotWriter(std::filesystem::path out_dir, SnapshotLegend legend = {}, bool new_series = true,
+                          SnapshotFormat format = {});
 
   // One snapshot of the series: when, which step, how many particles.
   struct Entry {
@@ -87,6 +101,7 @@ class SnapshotWriter {
 
   std::filesystem::path out_dir_;
   SnapshotLegend legend_;
+  SnapshotFormat format_;
   std::vector<Entry> entries_;
 };
 
