@@ -108,6 +108,7 @@ void check_run_memory(SceneBuild<D>& b) {
   in.particles = n;
   in.listed_per_particle = double(sim.neighbors().total()) / std::max(1.0, n);
   in.snapshots = b.scene->output.snapshots;
+  in.snapshot_deflate = b.scene->output.snapshot_deflate;
   in.bodies_or_slides = !b.scene->bodies.empty() || !b.scene->slides.empty();
   for (const auto& phase : sim.phases) in.non_newtonian = in.non_newtonian || !std::holds_alternative<Newtonian>(phase.rheology);
   const double settling = b.initial_state == InitialState::settled ? r["method"]["settling_time"].as<double>() : 0.0;

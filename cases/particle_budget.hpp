@@ -12,6 +12,7 @@ struct RunMemoryInputs {
   double particles = 0.0;            // all, periodic ghosts included
   double listed_per_particle = 0.0;  // neighbour-list entries a particle, as built
   bool snapshots = true;             // output.snapshots: HDF5 and the snapshot's buffers
+  bool snapshot_deflate = false;     // output.snapshot_compression: deflate (its chunk buffers)
   bool bodies_or_slides = false;     // rigid bodies (Bullet) or deformable slides
   bool non_newtonian = false;        // a phase with a rheology: the semi-implicit viscosity's vectors
   double body_steps = 0.0;           // rigid bodies x the steps of the settling and the run (Bullet's journal)

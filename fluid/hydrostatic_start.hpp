@@ -89,27 +89,32 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
     if (fresh) it->second = stretch_for_density_ratio<D>(dp, re, target);
     return it->second;
   };
-  // Bodies' boundary particles in horizontal cells dp wide, for the test of a run capped by a body (within dp / 2
-  // horizontally of its top): by index, the order of a scan over all particles.
+  // Items (particles, runs) binned by their horizontal cell `width` wide; those in the cells beside x's (within
+  // `width` horizontally of it) by index, so that a loop over them meets them in the order of a scan over all.
+  using Cells = std::map<std::array<long, 2>, std::vector<std::size_t>>;
   auto cell_of = [&](const Vec<D>& x, int k, double width) {
     return k < up ? std::lround(std::floor(x[k] / width)) : 0L;
   };
-  std::map<std::array<long, 2>, std::vector<std::size_t>> body_particles_in_cell;
-  if (apply && std::isfinite(capped_surface))
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.body_frame[i] >= 0)
-        body_particles_in_cell[{cell_of(P.position[i], 0, dp), cell_of(P.position[i], 1, dp)}].push_back(i);
-  std::vector<std::size_t> candidates;
-  auto body_particles_near = [&](const Vec<D>& x) -> const std::vector<std::size_t>& {
-    candidates.clear();
-    const long cx = cell_of(x, 0, dp), cy = cell_of(x, 1, dp), ry = D == 3 ? 1 : 0;
+  auto bin = [&](Cells& cells, const Vec<D>& x, double width, std::size_t item) {
+    cells[{cell_of(x, 0, width), cell_of(x, 1, width)}].push_back(item);
+  };
+  auto items_near = [&](const Cells& cells, const Vec<D>& x, double width,
+                        std::vector<std::size_t>& out) -> const std::vector<std::size_t>& {
+    out.clear();
+    const long cx = cell_of(x, 0, width), cy = cell_of(x, 1, width), ry = D == 3 ? 1 : 0;
     for (long a = cx - 1; a <= cx + 1; ++a)
       for (long c = cy - ry; c <= cy + ry; ++c)
-        if (const auto found = body_particles_in_cell.find({a, c}); found != body_particles_in_cell.end())
-          candidates.insert(candidates.end(), found->second.begin(), found->second.end());
-    std::sort(candidates.begin(), candidates.end());
-    return candidates;
+        if (const auto found = cells.find({a, c}); found != cells.end())
+          out.insert(out.end(), found->second.begin(), found->second.end());
+    std::sort(out.begin(), out.end());
+    return out;
   };
+  // Bodies' boundary particles, for the test of a run capped by a body (within dp / 2 horizontally of its top).
+  Cells body_particles_in_cell;
+  if (apply && std::isfinite(capped_surface))
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.body_frame[i] >= 0) bin(body_particles_in_cell, P.position[i], dp, i);
+  std::vector<std::size_t> candidates;
   // Group fluid particles by lattice column.
   std::map<std::array<long, 2>, std::vector<std::size_t>> columns;
   for (std::size_t i = 0; i < P.size(); ++i) {
@@ -134,7 +139,7 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
       if (apply && std::isfinite(capped_surface) && capped_surface > surface + 0.5 * dp) {
         const Vec<D>& top = P.position[members[end - 1]];
         bool capped = false;
-        for (const std::size_t i : body_particles_near(top)) {
+        for (const std::size_t i : items_near(body_particles_in_cell, top, dp, candidates)) {
           double h2 = 0.0;
           for (int k = 0; k < up; ++k) h2 += (P.position[i][k] - top[k]) * (P.position[i][k] - top[k]);
           const double above = P.position[i][up] - top[up];
@@ -212,22 +217,14 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
   //    being the symmetric gradient's (fluid/gradient.hpp).
   // Only runs within re horizontally count: they are looked up in cells re wide (over all runs, the 3-D bench case of
   // 5 M particles took 112 s here), in the runs' order, so the nearest and the first support are those of the scan.
-  std::map<std::array<long, 2>, std::vector<std::size_t>> runs_in_cell;
-  for (std::size_t r = 0; r < runs.size(); ++r)
-    runs_in_cell[{cell_of(runs[r].base, 0, re), cell_of(runs[r].base, 1, re)}].push_back(r);
+  Cells runs_in_cell;
+  for (std::size_t r = 0; r < runs.size(); ++r) bin(runs_in_cell, runs[r].base, re, r);
   std::vector<std::size_t> near;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] == Kind::fluid || P.body_frame[i] >= 0) continue;
     const Vec<D>& x = P.position[i];
-    near.clear();
-    const long cx = cell_of(x, 0, re), cy = cell_of(x, 1, re), ry = D == 3 ? 1 : 0;
-    for (long a = cx - 1; a <= cx + 1; ++a)
-      for (long c = cy - ry; c <= cy + ry; ++c)
-        if (const auto found = runs_in_cell.find({a, c}); found != runs_in_cell.end())
-          near.insert(near.end(), found->second.begin(), found->second.end());
-    std::sort(near.begin(), near.end());
     double best_h2 = re * re, shift = 0.0;
-    for (const std::size_t r : near) {
+    for (const std::size_t r : items_near(runs_in_cell, x, re, near)) {
       const Run& run = runs[r];
       double h2 = 0.0;
       for (int k = 0; k < up; ++k) h2 += (run.base[k] - x[k]) * (run.base[k] - x[k]);
