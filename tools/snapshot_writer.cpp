@@ -332,6 +332,10 @@ void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path
     const bool single = format_.single_precision, deflate = format_.deflate;
     // Positions, velocities and scalars in the format's precision; a vector padded to three components (XDMF's XYZ).
     auto write_real = [&](const char* name, std::span<const double> src, size_t cols) {
+      if (!single && cols == 0) {  // as it is
+        write_dataset(fid, tmp, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, src.data(), n, 0, deflate);
+        return;
+      }
       const size_t width = cols == 0 ? 1 : cols, given = cols == 0 ? 1 : d;
       std::vector<double> values(n * width, 0.0);
       for (size_t i = 0; i < n; ++i)
