@@ -80,6 +80,54 @@ std::optional<SlideShapesSpec> read_slide_shapes(const std::filesystem::path& sc
   return spec;
 }
 
+// diagnostics.gauge_records: a time_s column, increasing, and one column per gauge of the scene, every cell finite.
+std::optional<GaugeRecordsSpec> read_gauge_records(const std::filesystem::path& scene_dir, const YAML::Node& gn,
+                                                   const std::vector<GaugeSpec>& gauges) {
+  const std::string file = gn["file"].as<std::string>();
+  if (file.empty()) return std::nullopt;
+  const std::string key = "diagnostics.gauge_records.file";
+  const std::filesystem::path path = scene_dir / file;
+  CsvTable t;
+  try {
+    t = read_csv(path);
+  } catch (const std::runtime_error&) {
+    throw SceneError(key, "cannot read " + path.string());
+  }
+  const int ct = t.find_column("time_s");
+  if (ct < 0 || t.header.size() < 2)
+    throw SceneError(key, path.string() + ": the header must name a column time_s and at least one gauge");
+  GaugeRecordsSpec spec{file, gn["time_offset"].as<double>(), gn["until"].as<double>(), {}, {}};
+  std::vector<std::size_t> columns;
+  for (std::size_t c = 0; c < t.header.size(); ++c) {
+    if (static_cast<int>(c) == ct) continue;
+    const std::string& name = t.header[c];
+    if (std::none_of(gauges.begin(), gauges.end(), [&](const GaugeSpec& g) { return g.name == name; }))
+      throw SceneError(key, path.string() + ": column '" + name + "' names no gauge of the scene (gauges[].name)");
+    spec.gauges.push_back({name, {}});
+    columns.push_back(c);
+  }
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    try {
+      const auto& f = t.rows[k];
+      if (f.size() != t.header.size()) throw std::invalid_argument("short");
+      const double time = std::stod(f.at(ct));
+      if (!std::isfinite(time) || (!spec.time_measured.empty() && !(time > spec.time_measured.back())))
+        throw std::invalid_argument("time");
+      spec.time_measured.push_back(time);
+      for (std::size_t g = 0; g < columns.size(); ++g) {
+        const double e = std::stod(f.at(columns[g]));
+        if (!std::isfinite(e)) throw std::invalid_argument("not finite");
+        spec.gauges[g].elevation.push_back(e);
+      }
+    } catch (const std::exception&) {
+      throw SceneError(key, fmt::format("{} line {}: needs {} finite numbers, time_s increasing", path.string(),
+                                        t.line_numbers[k], t.header.size()));
+    }
+  }
+  if (spec.time_measured.size() < 2) throw SceneError(key, path.string() + ": needs at least two rows");
+  return spec;
+}
+
 OutputSpec read_output(const YAML::Node& on) {
   OutputSpec spec{on["snapshots"].as<bool>(), on["snapshot_interval"].as<double>(), on["gauge_interval"].as<double>(),
                   on["checkpoint_interval"].as<double>()};
@@ -96,21 +144,31 @@ OutputSpec read_output(const YAML::Node& on) {
 
 }  // namespace
 
-// The keys a 3-D scene does not have (profiles, diagnostics: cases/load_scene.cpp) are absent from its resolved scene,
-// and their specs stay off.
+// The keys a 3-D scene does not have (profiles, the diagnostics other than gauge_records: cases/load_scene.cpp) are
+// absent from its resolved scene, and their specs stay off.
 template <int D>
 void read_outputs(SceneBuild<D>& b) {
   const YAML::Node& r = b.r;  // (b is of a dependent type: r's .as<T>() needs no 'template')
   Scene<D>& scene = *b.scene;
   const YAML::Node diagnostics = r["diagnostics"];
   scene.gauges = read_gauges(r["gauges"]);
-  if (diagnostics) {
+  if (diagnostics && diagnostics["surge_front"]) {
     scene.surge_front = read_surge_front(diagnostics["surge_front"]);
     scene.velocity_profile = read_velocity_profile(diagnostics["velocity_profile"], b.options().lattice, b.dp);
   }
   scene.profiles = read_profiles(r["profiles"], b.dp);
   scene.output = read_output(r["output"]);
-  if (diagnostics) scene.slide_shapes = read_slide_shapes(b.scene_dir, diagnostics["slide_shapes"]);
+  if (diagnostics && diagnostics["slide_shapes"])
+    scene.slide_shapes = read_slide_shapes(b.scene_dir, diagnostics["slide_shapes"]);
+  if (diagnostics) scene.gauge_records = read_gauge_records(b.scene_dir, diagnostics["gauge_records"], scene.gauges);
+  if (scene.gauge_records) {
+    const auto& g = *scene.gauge_records;
+    if (g.time_measured.front() + g.time_offset > scene.end_time || g.time_measured.back() + g.time_offset < 0.0)
+      throw SceneError("diagnostics.gauge_records.time_offset",
+                       fmt::format("the records cover model times [{:.6g}, {:.6g}] s, outside the run's [0, {:.6g}] s",
+                                   g.time_measured.front() + g.time_offset, g.time_measured.back() + g.time_offset,
+                                   scene.end_time));
+  }
   for (const auto& t : r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());
   if (!std::is_sorted(scene.slide_outline_times.begin(), scene.slide_outline_times.end()))
     throw SceneError("output.slide_outline_times", "must be in increasing order");

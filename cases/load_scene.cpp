@@ -28,10 +28,15 @@ int requested_dimension(const YAML::Node& raw) {
 
 // 2-D keys that 3-D scenes do not have yet: named as such rather than as unknown keys.
 void refuse_keys_not_yet_in_3d(const YAML::Node& raw) {
-  for (const char* key : {"profiles", "diagnostics"})
-    if (raw[key])
-      throw SceneError(key, std::string("3-D scenes (dimension: 3) have no ") + key +
-                                " yet: this key works in 2-D scenes only (cases/SCHEMA.md, 3-D scenes)");
+  const auto refuse = [](const std::string& key) {
+    throw SceneError(key, "3-D scenes (dimension: 3) have no " + key +
+                              " yet: this key works in 2-D scenes only (cases/SCHEMA.md, 3-D scenes)");
+  };
+  if (raw["profiles"]) refuse("profiles");
+  const YAML::Node diagnostics = raw["diagnostics"];
+  if (diagnostics && diagnostics.IsMap())
+    for (const char* key : {"surge_front", "velocity_profile", "slide_shapes"})
+      if (diagnostics[key]) refuse(std::string("diagnostics.") + key);
 }
 
 }  // namespace

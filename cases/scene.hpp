@@ -9,6 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "cases/gauge_records_spec.hpp"
 #include "cases/schema.hpp"
 #include "coupling/equilibrium_column.hpp"
 #include "coupling/relaxation.hpp"
@@ -137,6 +138,7 @@ struct Scene {
   std::vector<SlideReport> slides;
   std::vector<double> slide_outline_times;  // s, increasing
   std::optional<SlideShapesSpec> slide_shapes;
+  std::optional<GaugeRecordsSpec> gauge_records;
   std::optional<Relaxation> settling;  // the settled start, when used
   double particle_spacing = 0.0;       // m
   double memory_estimate_bytes = 0.0;  // the run's peak resident memory, estimated (cases/particle_budget.hpp)

@@ -301,6 +301,21 @@ Schema slide_shapes_schema() {
       false);
 }
 
+Schema gauge_records_schema() {
+  return S::map(
+      "measured free-surface elevations at the scene's gauges (gauge_records.csv: for each gauge the rms difference "
+      "over the time both cover, the measured height, and the deepest trough and highest crest of the run and the "
+      "record; tools/measures/gauge_records.hpp); the run's elevation counts from its gauge's first value",
+      {{"file", S::text("CSV of the records, relative to the scene file: a column time_s, then one column per gauge "
+                        "named as in gauges, the elevation from the still water level in m; empty: off",
+                        "")},
+       {"time_offset", S::number("model time = measured time + time_offset", "s", 0.0)},
+       {"until", S::number("compare up to this model time (before what a tank cut short reflects reaches the "
+                           "gauges); 0 = to the run's end",
+                           "s", 0.0, 0.0, S::inf)}},
+      false);
+}
+
 Schema surge_schema() {
   return S::map(
       "dam-break diagnostics (surge_front.csv): front of the largest connected body of water (particles closer "
@@ -516,7 +531,8 @@ Schema make_schema_3d() {
        {"time_step", time_step_schema()},
        {"checks", checks_schema()},
        {"output", output_schema()},
-       {"gauges", S::list("wave gauges", gauge_schema_3d())}});
+       {"gauges", S::list("wave gauges", gauge_schema_3d())},
+       {"diagnostics", S::map("case-specific diagnostics", {{"gauge_records", gauge_records_schema()}}, false)}});
 }
 
 Schema make_schema() {
@@ -550,7 +566,8 @@ Schema make_schema() {
        {"profiles", profiles_schema()},
        {"diagnostics", S::map("case-specific diagnostics", {{"surge_front", surge_schema()},
                                                               {"velocity_profile", velocity_profile_schema()},
-                                                              {"slide_shapes", slide_shapes_schema()}},
+                                                              {"slide_shapes", slide_shapes_schema()},
+                                                              {"gauge_records", gauge_records_schema()}},
                                false)}});
 }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Plots a slide run: wave gauges (gauges.png); for a dam break the surge front against Martin & Moyce (1952)
+"""Plots a slide run: wave gauges (gauges.png; against the measured records where the scene names them,
+diagnostics.gauge_records, a panel a gauge); for a dam break the surge front against Martin & Moyce (1952)
 (surge_front.png); for runs with bodies their position, velocity and fluid force against time (bodies.png);
 free-surface profiles (profiles.png); for deformable slides the front and largest thickness against time and the upper
 surface at the outline times (slide.png); for a scene with measured slide shapes (diagnostics.slide_shapes) the model's
@@ -59,15 +60,55 @@ def plot_front(runs, target):
     print("wrote", target)
 
 
+def measured_gauges(run):
+    """The records a run's scene compares its gauges with (diagnostics.gauge_records): ({gauge: (times on the model's
+    clock, elevations)}, the window's end or None), or None without them."""
+    try:
+        info = json.load(open(os.path.join(run, "run.json")))
+        spec = info["scene"]["diagnostics"]["gauge_records"]
+    except (OSError, KeyError, ValueError, TypeError):
+        return None
+    if not spec.get("file"):
+        return None
+    rows = read_csv(os.path.join(os.path.dirname(info["scene_file"]), spec["file"]))
+    offset = float(spec.get("time_offset", 0.0))
+    t = [float(r["time_s"]) + offset for r in rows]
+    records = {name: (t, [float(r[name]) for r in rows]) for name in rows[0] if name != "time_s"}
+    return records, (float(spec["until"]) if float(spec.get("until", 0.0)) > 0 else None)
+
+
 def plot_gauges(runs, target):
-    fig, ax = plt.subplots(figsize=(8, 4))
-    for run in runs:
-        rows = read_csv(os.path.join(run, "gauges.csv"))
-        t = [float(r["time"]) for r in rows]
-        for name in [c for c in rows[0].keys() if c != "time"]:
-            ax.plot(t, [float(r[name]) for r in rows], label=f"{name}: {label_of(run)}")
-    ax.set(xlabel="time (s)", ylabel="free-surface elevation (m)", title="wave gauges")
-    ax.legend(fontsize=7)
+    """One axes for all gauges; with measured records (diagnostics.gauge_records), one panel a gauge: the record, each
+    run's elevation from its first value, and gauge_records.csv's rms in the title."""
+    measured = measured_gauges(runs[0])
+    names = [c for c in read_csv(os.path.join(runs[0], "gauges.csv"))[0].keys() if c != "time"]
+    panels = names if measured else [None]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(8, 4 if not measured else 2.6 * len(panels)), squeeze=False)
+    for ax, panel in zip(axes[:, 0], panels):
+        titles = []
+        if measured and panel in measured[0]:
+            ax.plot(*measured[0][panel], "k-", lw=0.8, label="measured")
+            if measured[1] is not None:
+                ax.axvline(measured[1], color="0.6", ls=":", lw=0.8, label="compared up to")
+        for run in runs:
+            rows = read_csv(os.path.join(run, "gauges.csv"))
+            t = [float(r["time"]) for r in rows]
+            for name in [panel] if panel else [c for c in rows[0].keys() if c != "time"]:
+                eta = [float(r[name]) for r in rows]
+                still = next((e for e in eta if e == e), 0.0) if panel else 0.0
+                ax.plot(t, [e - still for e in eta], label=f"{name}: {label_of(run)}")
+            if panel and os.path.exists(os.path.join(run, "gauge_records.csv")):
+                for r in read_csv(os.path.join(run, "gauge_records.csv")):
+                    if r["gauge"] == panel:
+                        titles.append(f"rms {1000 * float(r['rms']):.1f} mm "
+                                      f"({100 * float(r['rms_over_height']):.0f} % of the measured height)")
+        if panel:
+            ax.set(ylabel="elevation (m)", title=f"{panel}: " + "; ".join(titles) if titles else panel)
+            ax.title.set_fontsize(9)
+        else:
+            ax.set(ylabel="free-surface elevation (m)", title="wave gauges")
+        ax.legend(fontsize=6)
+    axes[-1, 0].set(xlabel="time (s)")
     fig.tight_layout()
     fig.savefig(target, dpi=110)
     print("wrote", target)

@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "cases/csv_table.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/base64.hpp"
 #include "tools/plot_scripts.hpp"
@@ -45,6 +46,26 @@ std::string row(const std::vector<std::string>& cells, const char* tag = "td") {
 }
 
 std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : ""; }
+
+// gauge_records.csv as a table in mm and s (nothing without the file).
+std::string gauge_records_table(const fs::path& file) {
+  if (!fs::exists(file)) return "";
+  const CsvTable t = read_csv(file);
+  std::string out = "<h2>Wave gauges against the measured records (gauge_records.csv)</h2>\n<table>\n";
+  out += row({"gauge", "compared, s", "rms, mm", "rms / measured height", "deepest trough: run, mm at s",
+              "measured, mm at s", "highest crest: run, mm at s", "measured, mm at s"},
+             "th");
+  const auto mm = [](const std::string& v) { return number(1000.0 * std::stod(v)); };
+  for (const auto& r : t.rows) {
+    const auto at = [&](const char* name) { return r.at(t.column(name)); };
+    out += row({at("gauge"), number(std::stod(at("from"))) + " - " + number(std::stod(at("to"))), mm(at("rms")),
+                number(std::stod(at("rms_over_height"))), mm(at("trough")) + " at " + number(std::stod(at("trough_time"))),
+                mm(at("measured_trough")) + " at " + number(std::stod(at("measured_trough_time"))),
+                mm(at("crest")) + " at " + number(std::stod(at("crest_time"))),
+                mm(at("measured_crest")) + " at " + number(std::stod(at("measured_crest_time")))});
+  }
+  return out + "</table>\n";
+}
 
 std::string page(const std::string& title, const std::string& body) {
   return fmt::format(R"(<!DOCTYPE html>
@@ -100,11 +121,14 @@ std::string run_body(const fs::path& dir) {
   if (run.contains("time_step_limits"))
     for (auto it = run["time_step_limits"].begin(); it != run["time_step_limits"].end(); ++it)
       body += row({it.key(), it.value().dump()});
-  body += "</table>\n<h2>Figures</h2>\n";
+  body += "</table>\n";
+  body += gauge_records_table(dir / "gauge_records.csv");
+  body += "<h2>Figures</h2>\n";
   run_plot_script("plot_run.py", dir);
   for (const auto& [png, caption] : std::vector<std::pair<const char*, const char*>>{
            {"particles.png", "the particles at four times, coloured by phase and by speed"},
-           {"gauges.png", "free-surface elevation at the wave gauges"},
+           {"gauges.png", "free-surface elevation at the wave gauges (against the measured records, where the scene "
+                          "names them: diagnostics.gauge_records)"},
            {"surge_front.png", "dam-break surge front and water height at the wall against Martin & Moyce (1952)"},
            {"bodies.png", "bodies: position, velocity, fluid force and angle"},
            {"profiles.png", "free-surface profiles"},

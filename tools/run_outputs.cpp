@@ -12,6 +12,7 @@
 #include "coupling/slide_shape_error.hpp"
 #include "coupling/surge_front.hpp"
 #include "coupling/velocity_profile.hpp"
+#include "tools/measures/gauge_records.hpp"
 
 namespace slide::tools {
 
@@ -358,6 +359,24 @@ void RunOutputs<D>::write_final() {
   if (t > last_sample_time_ + eps_) sample();
   if (bodies_ && t > last_body_sample_time_ + eps_) sample_bodies();
   flush();
+  if (scene_.gauge_records && gauges_) write_gauge_records();
+}
+
+// gauge_records.csv: each measured gauge against the run's (tools/measures/gauge_records.hpp), from gauges.csv as
+// written, so that a resumed run compares its whole record.
+template <int D>
+void RunOutputs<D>::write_gauge_records() const {
+  const auto comparisons = compare_gauge_records(read_csv(gauges_->path()), *scene_.gauge_records);
+  std::string text =
+      "gauge,from,to,samples,rms,measured_height,rms_over_height,trough_time,trough,measured_trough_time,"
+      "measured_trough,crest_time,crest,measured_crest_time,measured_crest\n";
+  for (const auto& c : comparisons)
+    text += fmt::format("{},{:.17g},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
+                        "{:.17g},{:.17g}\n",
+                        c.gauge, c.from, c.to, c.samples, c.rms, c.measured_height, c.rms / c.measured_height,
+                        c.trough.time, c.trough.elevation, c.measured_trough.time, c.measured_trough.elevation,
+                        c.crest.time, c.crest.elevation, c.measured_crest.time, c.measured_crest.elevation);
+  write_file_atomically(gauges_->path().parent_path() / "gauge_records.csv", text);
 }
 
 // Every table, in one fixed order (the checkpoint's), each whether or not this scene writes it.

@@ -64,6 +64,7 @@ class RunOutputs : public StepObserver<D> {
   void sample_slides();
   void sample_slide_outlines();
   void sample_slide_shapes();
+  void write_gauge_records() const;
   struct ModelSurface {
     std::vector<Vec<2>> surface;  // column centres and tops, increasing x
     double front = 0.0;           // m, the largest x the material reaches

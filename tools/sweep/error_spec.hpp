@@ -18,12 +18,15 @@ enum class ErrorMeasure {
                     // (tools/measures/floating_draft.hpp)
   poiseuille_profile,  // a channel's last velocity profile against plane Poiseuille flow's closed form
                        // (tools/measures/poiseuille_profile.hpp; the scene needs diagnostics.velocity_profile)
+  gauge_records,  // the wave gauges against measured records: the largest rms over the largest measured height
+                  // (gauge_records.csv, tools/measures/gauge_records.hpp; the scene needs diagnostics.gauge_records)
 };
 
 inline constexpr auto error_measure_names = make_name_table<ErrorMeasure>(
     std::pair{ErrorMeasure::none, "none"}, std::pair{ErrorMeasure::dam_break_front, "dam_break_front"},
     std::pair{ErrorMeasure::finest_run, "finest_run"}, std::pair{ErrorMeasure::floating_draft, "floating_draft"},
-    std::pair{ErrorMeasure::poiseuille_profile, "poiseuille_profile"});
+    std::pair{ErrorMeasure::poiseuille_profile, "poiseuille_profile"},
+    std::pair{ErrorMeasure::gauge_records, "gauge_records"});
 
 struct ErrorSpec {
   ErrorMeasure measure = ErrorMeasure::none;

@@ -14,6 +14,7 @@
 #include "tools/measures/dam_break_front.hpp"
 #include "tools/measures/floating_draft.hpp"
 #include "tools/measures/poiseuille_profile.hpp"
+#include "tools/measures/gauge_records.hpp"
 
 namespace slide::tools {
 namespace {
@@ -77,6 +78,9 @@ void measure_error(const Sweep& s, const std::filesystem::path& run_folder, cons
         return;
       case ErrorMeasure::poiseuille_profile:
         r.error = poiseuille_profile_error(run_folder).rms;
+        return;
+      case ErrorMeasure::gauge_records:
+        r.error = gauge_records_error(run_folder);
         return;
       case ErrorMeasure::dam_break_front:
         r.error = dam_break_front_error(read_csv(run_folder / "surge_front.csv"), read_csv(s.error.reference),
