@@ -436,7 +436,7 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders and convex meshes, free motion or the ln cosh law (time series, "
+      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders, convex prisms and convex meshes, free motion or the ln cosh law (time series, "
       "deformable slides and other motions are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"shape",
@@ -457,6 +457,20 @@ Schema body_schema_3d() {
                              {"height", S::number("length along its axis", "m", std::nullopt, 0.0, S::inf, true, false)},
                              {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
                                                   "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv); 0: axis along z",
+                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
+                    {"prism",
+                     S::map("a right prism: a convex polygon in the body frame's x-y plane swept along the frame's z "
+                            "(a 2-D slide's cross-section extruded: with angles [90, 0, 0] the outline's (x, y) lie "
+                            "in the scene's (x, z) and the prism runs across y)",
+                            {{"center", S::vector("where the frame's origin goes (half way along the prism)", "m", 3,
+                                                  std::nullopt)},
+                             {"outline", point_list("vertices in the frame's x-y plane, either way round (closed "
+                                                    "automatically; convex)",
+                                                    3)},
+                             {"length", S::number("length along the frame's z", "m", std::nullopt, 0.0, S::inf, true,
+                                                  false)},
+                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
                                                   "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
                     {"mesh",
                      S::map("a closed triangle mesh from a file (convex so far), checked before anything runs: closed, "

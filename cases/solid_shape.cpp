@@ -1,4 +1,4 @@
-// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box, sphere and cylinder, cut by the tanks' symmetry planes.
+// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box, sphere, cylinder, prism and mesh, cut by the tanks' symmetry planes.
 #include "cases/solid_shape.hpp"
 
 #include <fmt/format.h>
@@ -13,6 +13,7 @@
 #include "mesh/closed_mesh.hpp"
 #include "mesh/convex_inset.hpp"
 #include "mesh/mesh_distance.hpp"
+#include "rigid/polygon.hpp"
 
 namespace slide::cases {
 namespace {
@@ -188,6 +189,39 @@ MirrorPlane SymmetryPlane::mirror() const {
   return m;
 }
 
+namespace {
+
+// A shape known by its triangles alone (a mesh, a prism): the signed distance from CGAL's tree on them, the boundary
+// points sampled evenly on them in layers, Bullet's hull by the convex inset.
+void from_its_surface(SolidShape& s, const std::string& path, double dp, int layers) {
+  const auto distance = std::make_shared<const mesh::MeshDistance>(s.surface);
+  s.signed_distance = [distance](const Vec<3>& p) { return distance->signed_distance(p); };
+  s.points = surface_layers(s.surface, *distance, [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; },
+                            dp, layers);
+  s.inset = [whole = s.surface, path](double margin) {
+    try {
+      return mesh::convex_inset(whole, margin);
+    } catch (const std::invalid_argument&) {
+      throw SceneError(path + ".shape", "too thin for the collision margin");
+    }
+  };
+}
+
+// bodies[k].shape of type prism: its outline made counter-clockwise, checked convex, swept over its length.
+rigid::TriangleSurface prism_of(const YAML::Node& shape, const std::string& path, const Vec<3>& centre,
+                                const rigid::Mat3& axes) {
+  std::vector<rigid::Vec2> outline;
+  for (const auto& p : points_of(shape["outline"])) outline.emplace_back(p[0], p[1]);
+  outline = rigid::counter_clockwise(outline);
+  if (!rigid::is_convex_ccw(outline))
+    throw SceneError(path + ".shape.outline", "must be a convex polygon (concave bodies are not supported yet)");
+  std::vector<std::array<double, 2>> vertices;
+  for (const auto& v : outline) vertices.push_back({v[0], v[1]});
+  return rigid::prism_surface(vertices, shape["length"].as<double>(), centre, axes);
+}
+
+}  // namespace
+
 bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < whole_volume * (1.0 - 1e-12); }
 
 SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
@@ -198,17 +232,11 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
   if (type == "mesh") {
     s.axes = axes_of(shape);
     s.surface = placed_mesh(shape, path, scene_dir, s.axes);
-    const auto distance = std::make_shared<const mesh::MeshDistance>(s.surface);
-    s.signed_distance = [distance](const Vec<3>& p) { return distance->signed_distance(p); };
-    s.points = surface_layers(s.surface, *distance, [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; },
-                              dp, layers);
-    s.inset = [whole = s.surface, path](double margin) {
-      try {
-        return mesh::convex_inset(whole, margin);
-      } catch (const std::invalid_argument&) {
-        throw SceneError(path + ".shape", "too thin for the collision margin");
-      }
-    };
+    from_its_surface(s, path, dp, layers);
+  } else if (type == "prism") {
+    s.axes = axes_of(shape);
+    s.surface = prism_of(shape, path, centre, s.axes);
+    from_its_surface(s, path, dp, layers);
   } else if (type == "sphere") {
     const double radius = shape["radius"].as<double>();
     if (!(radius > 0.0)) throw SceneError(path + ".shape.radius", "must be positive");

@@ -164,6 +164,43 @@ TEST(Scene3D, BoxBodyHasItsLayersAndTheWaterKeepsClearOfIt) {
   EXPECT_EQ(scene->simulation->bodies()->size(), 1u);
 }
 
+// A prism: a right-angled triangle (legs 0.04 m, given clockwise) in its frame's x-y plane, swept 0.04 m along the
+// frame's z, turned by roll 90 degrees so that the triangle lies in the scene's x-z plane and the prism runs across y
+// (a 2-D wedge extruded): in the world, x - cx >= -0.02, z - cz >= -0.02, (x - cx) + (z - cz) <= 0, |y - cy| <= 0.02.
+// Its volume is half the cube's; every boundary particle lies in it; no water does.
+TEST(Scene3D, PrismBodyIsItsOutlineSweptAndTurned) {
+  const std::string body = "bodies: [{name: wedge, shape: {type: prism, center: [0.05, 0.05, 0.05], outline: [[-0.02, "
+                           "-0.02], [-0.02, 0.02], [0.02, -0.02]], length: 0.04, angles: [90, 0, 0]}, density: 600}]\n";
+  const auto scene = build_scene<3>(load_scene_text(tank_scene("square", body), {}), "s");
+  ASSERT_EQ(scene->bodies.size(), 1u);
+  EXPECT_NEAR(scene->bodies[0].area, 0.5 * 0.04 * 0.04 * 0.04, 1e-15);
+  EXPECT_NEAR(scene->bodies[0].mass, 600.0 * 0.5 * 0.04 * 0.04 * 0.04, 1e-12);
+  EXPECT_GT(scene->bodies[0].particles, 0u);
+  const auto inside = [](const Vec<3>& p, double tolerance) {
+    const Vec<3> q = p - Vec<3>(0.05, 0.05, 0.05);
+    return q[0] >= -0.02 - tolerance && q[2] >= -0.02 - tolerance && q[0] + q[2] <= tolerance &&
+           std::abs(q[1]) <= 0.02 + tolerance;
+  };
+  const auto& P = scene->simulation->particles();
+  std::size_t body_particles = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] == Kind::fluid) {
+      EXPECT_FALSE(inside(P.position[i], 0.0)) << "water at " << P.position[i].transpose();
+    } else if ((P.position[i] - Vec<3>(0.05, 0.05, 0.05)).cwiseAbs().maxCoeff() < 0.03) {
+      ++body_particles;
+      EXPECT_TRUE(inside(P.position[i], 1e-12)) << "boundary particle at " << P.position[i].transpose();
+    }
+  }
+  EXPECT_EQ(body_particles, scene->bodies[0].particles);
+}
+
+TEST(Scene3D, RefusesAConcavePrismNamingItsOutline) {
+  const std::string body = "bodies: [{name: notch, shape: {type: prism, center: [0.05, 0.05, 0.05], outline: [[-0.02, "
+                           "-0.02], [0.02, -0.02], [0.0, 0.0], [0.02, 0.02], [-0.02, 0.02]], length: 0.04}, "
+                           "density: 600}]\n";
+  EXPECT_EQ(refusal_key(tank_scene("square", body)), "bodies[0].shape.outline");
+}
+
 TEST(Scene3D, RefusesBadBodiesNamingTheKey) {
   const auto with = [](const std::string& fields) {
     return tank_scene("square", "bodies: [{name: box, shape: {type: box, center: [0.05, 0.05, 0.05], size: [0.04, "
