@@ -154,6 +154,8 @@ BodyMotion read_motion(const SceneBuild<2>& b, const YAML::Node& bn, const std::
       throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
                                                   "otherwise)");
   }
+  if (motion.mode == BodyMotion::Mode::rail)
+    throw SceneError(path + ".motion", "rail: 3-D scenes only so far (a 2-D body on a slope: motion: free)");
   if (motion.mode == BodyMotion::Mode::prescribed) motion.prescribed = read_prescribed(b, bn, path, outline);
   return motion;
 }

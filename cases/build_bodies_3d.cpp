@@ -78,9 +78,10 @@ void check_symmetry_locks(const SceneBuild<3>& b, const YAML::Node& bn, const So
     });
     if (!on_it) continue;
     if (spec.kinematic) {
-      const Vec<3> d = vec_of<3>(bn["prescribed"]["direction"]);
+      const std::string moved_by = bn["rail"] ? "rail" : "prescribed";
+      const Vec<3> d = vec_of<3>(bn[moved_by]["direction"]);
       if (std::abs(plane.normal.dot(d)) > 1e-12 * d.norm())
-        throw SceneError(path + ".prescribed.direction",
+        throw SceneError(path + "." + moved_by + ".direction",
                          fmt::format("the symmetry plane {} cuts this body, which must then move along it", plane.key));
       continue;
     }
@@ -92,18 +93,36 @@ void check_symmetry_locks(const SceneBuild<3>& b, const YAML::Node& bn, const So
   }
 }
 
-// Free or prescribed (bodies[k].motion); a prescribed body follows the ln cosh law from its centre of mass `start`.
+// A body on a rail (bodies[k].rail): its direction made unit, its friction.
+rigid::Rail read_rail(const YAML::Node& bn, const std::string& path) {
+  if (!bn["rail"]) throw SceneError(path + ".rail", "motion: rail needs a rail map (its direction)");
+  if (bn["locked"].size() > 0) throw SceneError(path + ".locked", "applies to free motion only (a rail holds the rest)");
+  const Vec<3> d = vec_of<3>(bn["rail"]["direction"]);
+  if (!(d.norm() > 0.0)) throw SceneError(path + ".rail.direction", "must not be zero");
+  rigid::Rail rail;
+  for (int a = 0; a < 3; ++a) rail.direction[a] = d[a] / d.norm();
+  rail.friction = bn["rail"]["friction"].as<double>();
+  return rail;
+}
+
+// Free, prescribed or on a rail (bodies[k].motion); a prescribed body follows the ln cosh law from its centre of mass
+// `start`.
 BodyMotion read_motion(const YAML::Node& bn, const std::string& path, const Vec<3>& start) {
   BodyMotion motion;
   motion.mode = BodyMotion::mode_names.parse(bn["motion"].as<std::string>());
-  if (motion.mode == BodyMotion::Mode::free) {
-    if (bn["prescribed"]) throw SceneError(path + ".prescribed", "applies to motion: prescribed only");
+  if (motion.mode != BodyMotion::Mode::prescribed && bn["prescribed"])
+    throw SceneError(path + ".prescribed", "applies to motion: prescribed only");
+  if (motion.mode != BodyMotion::Mode::rail && bn["rail"])
+    throw SceneError(path + ".rail", "applies to motion: rail only");
+  if (motion.mode == BodyMotion::Mode::free) return motion;
+  if (motion.mode == BodyMotion::Mode::rail) {
+    motion.rail = read_rail(bn, path);
     return motion;
   }
   if (!bn["prescribed"]) throw SceneError(path + ".prescribed", "motion: prescribed needs a prescribed map");
   if (bn["locked"].size() > 0) throw SceneError(path + ".locked", "applies to free motion only");
   if (bn["release_time"].as<double>() > 0.0)
-    throw SceneError(path + ".release_time", "applies to free motion only (a prescribed body starts at start_time)");
+    throw SceneError(path + ".release_time", "applies to free and rail motion only (a prescribed body starts at start_time)");
   const YAML::Node pr = bn["prescribed"];
   const Vec<3> direction = vec_of<3>(pr["direction"]);
   if (!(direction.norm() > 0.0)) throw SceneError(path + ".prescribed.direction", "must not be zero");
@@ -196,7 +215,7 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     check_inside_tanks(b, surface, path);
     rigid::SolidSpec spec = solid_spec(bn, shape, path);
     BodyMotion motion = read_motion(bn, path, spec.centre_of_mass);
-    spec.kinematic = motion.mode == BodyMotion::Mode::prescribed;
+    spec.kinematic = motion.mode != BodyMotion::Mode::free;  // a rail body's one freedom is integrated outside Bullet
     check_symmetry_locks(b, bn, shape, spec, path);
     rigid::SolidSpec collision = spec;
     collision.hull = shape.inset(b.r["rigid"]["collision_margin"].as<double>() * b.dp);
@@ -205,7 +224,8 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     motion.free_while_settling =
         during_settling_names.parse(bn["during_settling"].as<std::string>()) == DuringSettling::free;
     if (motion.free_while_settling && spec.kinematic)
-      throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
+      throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law, a rail "
+                                                  "body waits for its release)");
     if (motion.free_while_settling && motion.release_time > 0.0)
       throw SceneError(path + ".during_settling", "free contradicts release_time > 0 (which holds the body)");
     if (motion.free_while_settling && b.initial_state != InitialState::settled)

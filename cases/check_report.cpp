@@ -138,10 +138,11 @@ std::string bodies(const Scene<3>& scene) {
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     const auto& b = scene.bodies[k];
     out += fmt::format(
-        "body {:<10} {} motion (six degrees of freedom), {} boundary particles\n"
+        "body {:<10} {} motion ({}), {} boundary particles\n"
         "  mass            {:.6g} kg, inertia {:.6g} kg m^2 (the tensor's mean diagonal)\n"
         "  volume          {:.6g} m^3, displaced below the still-water level {:.6g} m^3, buoyancy / weight {:.4g}\n",
-        b.name, b.motion, b.particles, b.mass, b.inertia, b.area, b.displaced_area, b.buoyancy_ratio);
+        b.name, b.motion, b.motion == "rail" ? "along its rail, not turning" : "six degrees of freedom", b.particles,
+        b.mass, b.inertia, b.area, b.displaced_area, b.buoyancy_ratio);
     if (b.moved_to_draft != 0.0)
       out += fmt::format("  placed at its draft below the still-water level: moved {:+.3f} mm from where the scene "
                          "put it (Archimedes on its surface)\n",

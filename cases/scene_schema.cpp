@@ -107,7 +107,7 @@ Schema body_schema() {
                                      "direction", "", 2, std::vector<double>{1.0, 0.0})},
        {"motion",
         S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
-                  "the law in `prescribed`",
+                  "the law in `prescribed`; rail: 3-D scenes only",
                   BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
        {"locked", S::list("components held fixed (free motion)",
                           S::choice("component", locked_component_names.names(), std::nullopt))},
@@ -494,8 +494,18 @@ Schema body_schema_3d() {
                           S::choice("component", {"x", "y", "z", "rx", "ry", "rz"}, std::nullopt))},
        {"motion",
         S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows the law in "
-                  "`prescribed` (the fluid's force on it is still reported)",
+                  "`prescribed` (the fluid's force on it is still reported); rail: moves along `rail.direction` only, "
+                  "without turning, under gravity and the fluid (two-way coupled), the rail taking the force across "
+                  "it and its friction opposing the motion (rigid/rail_motion.hpp); it passes through walls (the rail "
+                  "keeps it off them)",
                   BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
+       {"rail",
+        S::map("a rail the body runs on (motion: rail), from where it is put; held there until release_time",
+               {{"direction", S::vector("direction of the rail (made unit)", "", 3, std::nullopt)},
+                {"friction", S::number("Coulomb coefficient of the rail: the friction force is this times the force "
+                                       "the rail takes across it",
+                                       "", 0.0, 0.0, 10.0)}},
+               false)},
        {"prescribed",
         S::map("prescribed motion (motion: prescribed); 3-D so far: the ln cosh law, the body not turning",
                {{"type", S::choice("ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) along `direction` (rigid/"

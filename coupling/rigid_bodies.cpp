@@ -254,6 +254,8 @@ void RigidBodies<D>::advance(double time_after, double dt) {
     if (motion[b].mode == BodyMotion::Mode::free) {
       if (!settling_ && time_after > motion[b].release_time) world.set_held(int(b), false);
       world.apply_force(int(b), world_vector(f.total()), f.total_torque());
+    } else if (motion[b].mode == BodyMotion::Mode::rail && !settling_ && time_after > motion[b].release_time) {
+      move_on_rail(int(b), f.total(), dt);
     }
     force[b] = f;
     pending_[b] = BodyFluidForce<D>{};
@@ -274,6 +276,26 @@ void RigidBodies<D>::advance(double time_after, double dt) {
     }
   }
   impulse_time_ += dt;
+}
+
+template <int D>
+void RigidBodies<D>::move_on_rail(int b, const Vec<D>& fluid_force, double dt) {
+  if constexpr (D == 3) {
+    const rigid::Rail& rail = *motion[static_cast<std::size_t>(b)].rail;
+    const Vec<3> d(rail.direction[0], rail.direction[1], rail.direction[2]);
+    const double mass = world.mass(b);
+    const Vec<3> force = fluid_force + mass * gravity_;
+    const double along = force.dot(d);
+    rigid::SpatialState s = world.spatial_state(b);
+    const double speed = rigid::rail_speed_after(Vec<3>(s.velocity).dot(d), along, (force - along * d).norm(), mass,
+                                                 rail.friction, dt);
+    s.position += rigid::Vec3(dt * speed * d);
+    s.velocity = rigid::Vec3(speed * d);
+    s.angular_velocity = rigid::Vec3::Zero();
+    world.set_kinematic_state(b, s);
+  } else {
+    throw std::logic_error("a rail body in a 2-D scene");
+  }
 }
 
 template <int D>

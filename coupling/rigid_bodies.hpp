@@ -20,6 +20,7 @@
 #include "fluid/state_stream.hpp"
 #include "fluid/viscosity.hpp"
 #include "rigid/prescribed_motion.hpp"
+#include "rigid/rail_motion.hpp"
 #include "rigid/spatial_prescribed_motion.hpp"
 #include "rigid/rigid_world.hpp"
 
@@ -59,19 +60,21 @@ struct BodyFluidForce {
 };
 
 struct BodyMotion {
-  enum class Mode { free, prescribed } mode = Mode::free;
-  static constexpr auto mode_names =
-      make_name_table<Mode>(std::pair{Mode::free, "free"}, std::pair{Mode::prescribed, "prescribed"});
+  enum class Mode { free, prescribed, rail } mode = Mode::free;
+  static constexpr auto mode_names = make_name_table<Mode>(std::pair{Mode::free, "free"},
+                                                           std::pair{Mode::prescribed, "prescribed"},
+                                                           std::pair{Mode::rail, "rail"});
   double release_time = 0.0;                        // free bodies are held until then
   bool free_while_settling = false;                 // floats with the water during a settled start (free bodies)
   std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed, 2-D
   std::optional<rigid::SpatialPrescribedMotion> prescribed_3d;  // for Mode::prescribed, 3-D
+  std::optional<rigid::Rail> rail;                              // for Mode::rail (3-D), held until release_time
 };
 
 template <int D>
 class RigidBodies {
  public:
-  RigidBodies(const Vec<D>& gravity, double margin) : world(world_vector(gravity), margin) {}
+  RigidBodies(const Vec<D>& gravity, double margin) : world(world_vector(gravity), margin), gravity_(gravity) {}
 
   rigid::RigidWorld world;
   std::vector<std::string> names;
@@ -157,12 +160,16 @@ class RigidBodies {
     else return rigid::Vec3(v[0], v[1], v[2]);
   }
   void accumulate(const Domain<D>& domain, const std::vector<Vec<D>>& per_particle, bool viscous);
+  // A rail body's step (rigid/rail_motion.hpp) under the fluid force of the step and gravity: its kinematic pose and
+  // velocity at the step's end.
+  void move_on_rail(int b, const Vec<D>& fluid_force, double dt);
   template <class PairForce>
   void exchange(const Domain<D>& domain, const NeighborList& nl, bool viscous, const PairForce& pair_force);
   std::vector<BodyFluidForce<D>> pending_;
   std::vector<MeanForces> impulse_;  // force x time since the last take_mean_forces
   double impulse_time_ = 0.0;
   std::vector<Vec<D>> scratch_;
+  Vec<D> gravity_;
   std::vector<std::vector<Vec<2>>> outline_;  // 2-D: each body's outline about its centre of mass, as created (ccw)
   std::vector<BodyState<D>> placed_state_;  // at the last placement
   double placed_time_ = 0.0;
