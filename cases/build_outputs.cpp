@@ -80,6 +80,14 @@ std::optional<SlideShapesSpec> read_slide_shapes(const std::filesystem::path& sc
   return spec;
 }
 
+// A cell that is a number and nothing else (std::stod alone takes "1.5x" as 1.5); std::invalid_argument otherwise.
+double whole_number(const std::string& cell) {
+  std::size_t used = 0;
+  const double v = std::stod(cell, &used);
+  if (cell.find_first_not_of(" \t", used) != std::string::npos) throw std::invalid_argument("trailing text");
+  return v;
+}
+
 // diagnostics.gauge_records: a time_s column, increasing, and one column per gauge of the scene, every cell finite.
 std::optional<GaugeRecordsSpec> read_gauge_records(const std::filesystem::path& scene_dir, const YAML::Node& gn,
                                                    const std::vector<GaugeSpec>& gauges) {
@@ -110,12 +118,12 @@ std::optional<GaugeRecordsSpec> read_gauge_records(const std::filesystem::path& 
     try {
       const auto& f = t.rows[k];
       if (f.size() != t.header.size()) throw std::invalid_argument("short");
-      const double time = std::stod(f.at(ct));
+      const double time = whole_number(f.at(ct));
       if (!std::isfinite(time) || (!spec.time_measured.empty() && !(time > spec.time_measured.back())))
         throw std::invalid_argument("time");
       spec.time_measured.push_back(time);
       for (std::size_t g = 0; g < columns.size(); ++g) {
-        const double e = std::stod(f.at(columns[g]));
+        const double e = whole_number(f.at(columns[g]));
         if (!std::isfinite(e)) throw std::invalid_argument("not finite");
         spec.gauges[g].elevation.push_back(e);
       }
@@ -163,11 +171,15 @@ void read_outputs(SceneBuild<D>& b) {
   if (diagnostics) scene.gauge_records = read_gauge_records(b.scene_dir, diagnostics["gauge_records"], scene.gauges);
   if (scene.gauge_records) {
     const auto& g = *scene.gauge_records;
-    if (g.time_measured.front() + g.time_offset > scene.end_time || g.time_measured.back() + g.time_offset < 0.0)
+    const double first = g.time_measured.front() + g.time_offset, last = g.time_measured.back() + g.time_offset;
+    if (first > scene.end_time || last < 0.0)
       throw SceneError("diagnostics.gauge_records.time_offset",
                        fmt::format("the records cover model times [{:.6g}, {:.6g}] s, outside the run's [0, {:.6g}] s",
-                                   g.time_measured.front() + g.time_offset, g.time_measured.back() + g.time_offset,
-                                   scene.end_time));
+                                   first, last, scene.end_time));
+    if (g.until > 0.0 && g.until < std::max(first, 0.0))
+      throw SceneError("diagnostics.gauge_records.until",
+                       fmt::format("{:.6g} s ends the comparison before the records start (model time {:.6g} s)",
+                                   g.until, std::max(first, 0.0)));
   }
   for (const auto& t : r["output"]["slide_outline_times"]) scene.slide_outline_times.push_back(t.as<double>());
   if (!std::is_sorted(scene.slide_outline_times.begin(), scene.slide_outline_times.end()))

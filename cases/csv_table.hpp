@@ -53,6 +53,7 @@ inline CsvTable read_csv(const std::filesystem::path& file) {
   CsvTable t;
   std::string line;
   for (long number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a file with Windows line ends
     if (line.empty() || line[0] == '#') continue;
     if (t.header.empty()) {
       t.header = split_csv_line(line);

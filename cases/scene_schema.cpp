@@ -436,8 +436,9 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders, convex prisms and convex meshes, free motion or the ln cosh law (time series, "
-      "deformable slides and other motions are 2-D only yet); a tank's symmetry sides cut it (walls[].symmetry)",
+      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders, convex prisms and convex "
+      "meshes, free, on a rail or moved by the ln cosh law (time series and deformable slides are 2-D only yet); a "
+      "tank's symmetry sides cut it (walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"shape",
         S::variant("the body's shape", "type",

@@ -1,4 +1,5 @@
-// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box, sphere, cylinder, prism and mesh, cut by the tanks' symmetry planes.
+// Steps: the shapes of 3-D bodies (cases/solid_shape.hpp): box, sphere, cylinder, prism and mesh, cut by the tanks'
+// symmetry planes.
 #include "cases/solid_shape.hpp"
 
 #include <fmt/format.h>
@@ -196,8 +197,8 @@ namespace {
 void from_its_surface(SolidShape& s, const std::string& path, double dp, int layers) {
   const auto distance = std::make_shared<const mesh::MeshDistance>(s.surface);
   s.signed_distance = [distance](const Vec<3>& p) { return distance->signed_distance(p); };
-  s.points = surface_layers(s.surface, *distance, [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; },
-                            dp, layers);
+  const auto inside = [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; };
+  s.points = surface_layers(s.surface, *distance, inside, dp, layers);
   s.inset = [whole = s.surface, path](double margin) {
     try {
       return mesh::convex_inset(whole, margin);

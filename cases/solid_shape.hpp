@@ -1,5 +1,6 @@
 #pragma once
-// A 3-D body's shape (bodies[].shape, dimension: 3: box, sphere, cylinder, prism, a closed mesh from a file): its closed surface, its signed distance and its boundary points,
+// A 3-D body's shape (bodies[].shape, dimension: 3: box, sphere, cylinder, prism, a closed mesh from a file): its
+// closed surface, its signed distance and its boundary points,
 // cut by the scene's symmetry planes. To add a shape: its variant in body_schema_3d (cases/scene_schema.cpp) and its
 // case in solid_shape (solid_shape.cpp): a closed outward surface (mass properties, Bullet's hull, the draft), a signed
 // distance (where water may stand) and boundary points in layers with normals (the particles that carry it).

@@ -64,7 +64,7 @@ struct BodyMotion {
   static constexpr auto mode_names = make_name_table<Mode>(std::pair{Mode::free, "free"},
                                                            std::pair{Mode::prescribed, "prescribed"},
                                                            std::pair{Mode::rail, "rail"});
-  double release_time = 0.0;                        // free bodies are held until then
+  double release_time = 0.0;                        // free and rail bodies are held until then
   bool free_while_settling = false;                 // floats with the water during a settled start (free bodies)
   std::optional<rigid::PrescribedMotion> prescribed;  // for Mode::prescribed, 2-D
   std::optional<rigid::SpatialPrescribedMotion> prescribed_3d;  // for Mode::prescribed, 3-D
@@ -135,8 +135,8 @@ class RigidBodies {
   std::vector<MeanForces> take_mean_forces();
 
   // A settled start (coupling/relaxation.hpp) runs the step loop before t = 0. While it does, prescribed bodies stay
-  // at their pose of t = 0, free bodies are held unless they float with the water (free_while_settling), and no
-  // release time passes. Ending it restores the holds of t = 0 and stops every body.
+  // at their pose of t = 0, free bodies are held unless they float with the water (free_while_settling), rail bodies
+  // stay where they are put, and no release time passes. Ending it restores the holds of t = 0 and stops every body.
   void set_settling(bool on);
   // Multiplies the velocities of the bodies that float while settling by `factor` (the settling's damping).
   void damp_floating(double factor);

@@ -17,15 +17,19 @@ struct Rail {
 // across it (N, gravity and the fluid together), the body's mass (kg) and the rail's friction coefficient mu:
 //   m dv/dt = F_along - mu |F_across| sign(v)                   (v != 0),
 //   at rest: stays so while |F_along| <= mu |F_across|, else starts under F_along - mu |F_across| sign(F_along).
-// Friction stops a body within a step rather than turn it back: a speed that would change sign ends at rest, and the
-// next step starts from rest.
+// A speed that reaches zero within the step does so at t* = |v| m / (|F_along| + grip) (the force and friction both
+// against it); the body then rests if friction holds it, or goes back under |F_along| - grip for the rest of the
+// step (without friction this is v + dt F_along / m exactly).
 inline double rail_speed_after(double speed, double force_along, double force_across, double mass, double mu,
                                double dt) {
   const double grip = mu * std::abs(force_across);  // N, the most the friction holds
   if (speed == 0.0)
     return std::abs(force_along) <= grip ? 0.0 : dt * (force_along - std::copysign(grip, force_along)) / mass;
   const double next = speed + dt * (force_along - std::copysign(grip, speed)) / mass;
-  return (next > 0.0) == (speed > 0.0) ? next : 0.0;
+  if ((next > 0.0) == (speed > 0.0)) return next;
+  if (std::abs(force_along) <= grip) return 0.0;
+  const double at_rest = std::abs(speed) * mass / (std::abs(force_along) + grip);
+  return (dt - at_rest) * (force_along - std::copysign(grip, force_along)) / mass;
 }
 
 }  // namespace slide::rigid

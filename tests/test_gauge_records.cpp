@@ -71,6 +71,13 @@ TEST(GaugeRecords, UntilEndsTheWindow) {
   EXPECT_EQ(c[0].crest.time, 0.5);
 }
 
+// A sample a rounding past `until` (times are sums of steps) is the sample at `until`.
+TEST(GaugeRecords, ASampleARoundingPastUntilIsCompared) {
+  const cases::GaugeRecordsSpec spec{"f", 0.0, 2.0, {0.0, 3.0}, {{"g", {0.0, 0.0}}}};
+  const auto c = tools::compare_gauge_records(gauge_table({0.0, 1.0, 2.0000000000000004}, {0.0, 0.0, 0.0}), spec);
+  EXPECT_EQ(c[0].samples, 3u);
+}
+
 TEST(GaugeRecords, RefusesAGaugeTheRunDoesNotHaveOrRecordsThatShareNoTime) {
   const auto table = gauge_table({0, 1}, {0, 0});
   EXPECT_THROW(tools::compare_gauge_records(table, {"f", 0.0, 0.0, {0, 1}, {{"h", {0, 0}}}}), std::invalid_argument);
@@ -126,6 +133,12 @@ TEST(GaugeRecordsScene, RefusesRecordsThatDoNotFitTheSceneNamingTheKey) {
   EXPECT_EQ(refusal_key(dir, tank(with("text.csv"))), "diagnostics.gauge_records.file");
   EXPECT_EQ(refusal_key(dir, tank(with("missing.csv"))), "diagnostics.gauge_records.file");
   EXPECT_EQ(refusal_key(dir, tank(with("ok.csv", 1.0))), "diagnostics.gauge_records.time_offset");
+  EXPECT_EQ(refusal_key(dir, tank("diagnostics: {gauge_records: {file: ok.csv, time_offset: 0.002, until: 0.001}}\n")),
+            "diagnostics.gauge_records.until");
+  testing::write_file(dir / "junk.csv", "time_s,centre\n0,0\n0.005,0.001x\n");
+  EXPECT_EQ(refusal_key(dir, tank(with("junk.csv"))), "diagnostics.gauge_records.file");
+  testing::write_file(dir / "crlf.csv", "time_s,centre\r\n0,0\r\n0.005,0.001\r\n");
+  EXPECT_EQ(refusal_key(dir, tank(with("crlf.csv"))), "(accepted)");
   // The 2-D diagnostics are named as such in 3-D.
   EXPECT_EQ(refusal_key(dir, tank("diagnostics: {surge_front: {enabled: true}}\n")), "diagnostics.surge_front");
 }

@@ -27,8 +27,14 @@ TEST(RailMotion, CoulombFrictionOnTheForceAcross) {
   // Moving: friction against the motion, whatever the force's sign.
   EXPECT_DOUBLE_EQ(rail_speed_after(3.0, -2.0, 20.0, 2.0, 0.3, 0.5), 3.0 + 0.5 * (-2.0 - 6.0) / 2.0);
   EXPECT_DOUBLE_EQ(rail_speed_after(-3.0, 2.0, 20.0, 2.0, 0.3, 0.5), -3.0 + 0.5 * (2.0 + 6.0) / 2.0);
-  // Friction stops the body within the step rather than turn it back.
+  // Friction that holds the body stops it within the step (1 m/s, 8 N against it: at rest after 0.25 s of 0.5).
   EXPECT_EQ(rail_speed_after(1.0, -2.0, 20.0, 2.0, 0.3, 0.5), 0.0);
+  // A force that beats friction turns it back: at rest after t* = 1 x 2 / (10 + 6) = 0.125 s, then
+  // (0.5 - 0.125) (-10 + 6) / 2 = -0.75 m/s.
+  EXPECT_DOUBLE_EQ(rail_speed_after(1.0, -10.0, 20.0, 2.0, 0.3, 0.5), -0.75);
+  // Without friction, a reversal is v + dt F / m, as between any two instants.
+  EXPECT_NEAR(rail_speed_after(1.0, -10.0, 20.0, 2.0, 0.0, 0.5), 1.0 - 0.5 * 10.0 / 2.0, 1e-15);
+  EXPECT_NEAR(rail_speed_after(-0.3, 4.0, 20.0, 2.0, 0.0, 0.5), -0.3 + 0.5 * 4.0 / 2.0, 1e-15);
 }
 
 // A box on a rail down a 15 degree slope, in air, friction 0.2, held until 0.01 s: from rest it travels
@@ -139,6 +145,22 @@ bodies:
   EXPECT_EQ(key(body3 + "motion: rail, rail: {direction: [0, 0, 0]}}\n", 3), "bodies[0].rail.direction");
   EXPECT_EQ(key(body3 + "rail: {direction: [1, 0, 0]}}\n", 3), "bodies[0].rail");  // motion free
   EXPECT_EQ(key(body3 + "motion: rail, rail: {direction: [1, 0, 0]}, locked: [x]}\n", 3), "bodies[0].locked");
+  // A body a symmetry plane cuts: its rail runs in the plane, without friction (the force across would count the
+  // half body's push on the plane).
+  const std::string cut = R"(dimension: 3
+particle_spacing: 0.02
+lattice: square
+end_time: 1
+method: {initial_state: lattice}
+fluid:
+  phases: [{name: water}]
+  regions: [{type: below_level, level: 0.3}]
+walls: [{type: tank, min: [0, 0, 0], max: [0.3, 0.3, 0.4], symmetry: [y_min]}]
+bodies:
+  - {name: s, shape: {type: box, center: [0.15, 0, 0.15], size: [0.1, 0.08, 0.06]}, density: 2000, )";
+  EXPECT_EQ(key(cut + "motion: rail, rail: {direction: [1, 0, 0]}}\n", 3), "(accepted)");
+  EXPECT_EQ(key(cut + "motion: rail, rail: {direction: [1, 1, 0]}}\n", 3), "bodies[0].rail.direction");
+  EXPECT_EQ(key(cut + "motion: rail, rail: {direction: [1, 0, 0], friction: 0.1}}\n", 3), "bodies[0].rail.friction");
   EXPECT_EQ(key(std::string(kGoodScene) + "bodies: [{name: b, shape: {type: box, center: [0.4, 0.1], size: [0.05, "
                                           "0.05]}, density: 2000, motion: rail}]\n",
                 2),

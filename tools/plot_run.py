@@ -70,7 +70,10 @@ def measured_gauges(run):
         return None
     if not spec.get("file"):
         return None
-    rows = read_csv(os.path.join(os.path.dirname(info["scene_file"]), spec["file"]))
+    try:
+        rows = read_csv(os.path.join(os.path.dirname(info["scene_file"]), spec["file"]))
+    except OSError:  # the scene's path as typed, read from another folder: draw the run alone
+        return None
     offset = float(spec.get("time_offset", 0.0))
     t = [float(r["time_s"]) + offset for r in rows]
     records = {name: (t, [float(r[name]) for r in rows]) for name in rows[0] if name != "time_s"}

@@ -58,11 +58,10 @@ std::string gauge_records_table(const fs::path& file) {
   const auto mm = [](const std::string& v) { return number(1000.0 * std::stod(v)); };
   for (const auto& r : t.rows) {
     const auto at = [&](const char* name) { return r.at(t.column(name)); };
-    out += row({at("gauge"), number(std::stod(at("from"))) + " - " + number(std::stod(at("to"))), mm(at("rms")),
-                number(std::stod(at("rms_over_height"))), mm(at("trough")) + " at " + number(std::stod(at("trough_time"))),
-                mm(at("measured_trough")) + " at " + number(std::stod(at("measured_trough_time"))),
-                mm(at("crest")) + " at " + number(std::stod(at("crest_time"))),
-                mm(at("measured_crest")) + " at " + number(std::stod(at("measured_crest_time")))});
+    const auto s = [&](const char* name) { return number(std::stod(at(name))); };
+    out += row({at("gauge"), s("from") + " - " + s("to"), mm(at("rms")), s("rms_over_height"),
+                mm(at("trough")) + " at " + s("trough_time"), mm(at("measured_trough")) + " at " + s("measured_trough_time"),
+                mm(at("crest")) + " at " + s("crest_time"), mm(at("measured_crest")) + " at " + s("measured_crest_time")});
   }
   return out + "</table>\n";
 }

@@ -39,18 +39,20 @@ std::vector<GaugeRecordComparison> compare_gauge_records(const CsvTable& gauges,
     c.from = std::max(t_model.front(), t_record.front());
     c.to = std::min(t_model.back(), t_record.back());
     if (spec.until > 0.0) c.to = std::min(c.to, spec.until);
+    // Sample times are sums of steps: 2.0000000000000004 is the sample at 2 s.
+    const double slack = 1e-9 * std::max(1.0, std::abs(c.to)), from = c.from - slack, to = c.to + slack;
     if (!(c.to >= c.from))
       throw std::invalid_argument("gauge " + measured.name + ": the run and the record share no time");
     double sum = 0.0;
     for (std::size_t k = 0; k < t_model.size(); ++k) {
-      if (t_model[k] < c.from || t_model[k] > c.to || std::isnan(eta[k])) continue;
+      if (t_model[k] < from || t_model[k] > to || std::isnan(eta[k])) continue;
       const double d = eta[k] - interpolate(t_record, measured.elevation, t_model[k]);
       sum += d * d;
       ++c.samples;
     }
     if (c.samples) c.rms = std::sqrt(sum / static_cast<double>(c.samples));
-    extremes_in(t_model, eta, c.from, c.to, c.trough, c.crest);
-    extremes_in(t_record, measured.elevation, c.from, c.to, c.measured_trough, c.measured_crest);
+    extremes_in(t_model, eta, from, to, c.trough, c.crest);
+    extremes_in(t_record, measured.elevation, from, to, c.measured_trough, c.measured_crest);
     c.measured_height = c.measured_crest.elevation - c.measured_trough.elevation;
     out.push_back(c);
   }

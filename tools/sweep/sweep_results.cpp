@@ -81,6 +81,7 @@ void measure_error(const Sweep& s, const std::filesystem::path& run_folder, cons
         return;
       case ErrorMeasure::gauge_records:
         r.error = gauge_records_error(run_folder);
+        if (std::isnan(r.error)) r.note = "a gauge stayed dry over the compared time";
         return;
       case ErrorMeasure::dam_break_front:
         r.error = dam_break_front_error(read_csv(run_folder / "surge_front.csv"), read_csv(s.error.reference),
