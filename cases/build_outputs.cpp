@@ -45,18 +45,22 @@ ProfileSpec read_profiles(const YAML::Node& pn, double dp) {
   return out;
 }
 
+// A CSV file a scene key names; SceneError naming the key when it cannot be read.
+CsvTable read_scene_csv(const std::filesystem::path& path, const std::string& key) {
+  try {
+    return read_csv(path);
+  } catch (const std::runtime_error&) {
+    throw SceneError(key, "cannot read " + path.string());
+  }
+}
+
 // diagnostics.slide_shapes: the measured surfaces grouped by their time (rows in any order), in increasing time.
 std::optional<SlideShapesSpec> read_slide_shapes(const std::filesystem::path& scene_dir, const YAML::Node& sn) {
   const std::string file = sn["file"].as<std::string>();
   if (file.empty()) return std::nullopt;
   const std::string key = "diagnostics.slide_shapes.file";
   const std::filesystem::path path = scene_dir / file;
-  CsvTable t;
-  try {
-    t = read_csv(path);
-  } catch (const std::runtime_error&) {
-    throw SceneError(key, "cannot read " + path.string());
-  }
+  const CsvTable t = read_scene_csv(path, key);
   const int ct = t.find_column("t_exp_s"), cx = t.find_column("x_m"), cy = t.find_column("y_m");
   if (ct < 0 || cx < 0 || cy < 0)
     throw SceneError(key, path.string() + ": the header must name the columns t_exp_s, x_m and y_m");
@@ -95,12 +99,7 @@ std::optional<GaugeRecordsSpec> read_gauge_records(const std::filesystem::path& 
   if (file.empty()) return std::nullopt;
   const std::string key = "diagnostics.gauge_records.file";
   const std::filesystem::path path = scene_dir / file;
-  CsvTable t;
-  try {
-    t = read_csv(path);
-  } catch (const std::runtime_error&) {
-    throw SceneError(key, "cannot read " + path.string());
-  }
+  const CsvTable t = read_scene_csv(path, key);
   const int ct = t.find_column("time_s");
   if (ct < 0 || t.header.size() < 2)
     throw SceneError(key, path.string() + ": the header must name a column time_s and at least one gauge");
