@@ -172,11 +172,11 @@ void refuse_flowing_water(const Scene<D>& scene) {
     const double shift_dp = s.largest_shift_by_phase[ph] / dp;
     if (!std::holds_alternative<Newtonian>(phases[ph].rheology) || shift_dp <= limit_dp) continue;
     throw SceneError("method.initial_state",
-                     fmt::format("the {} moved up to {:.3g} dp while it settled (water at rest moves less than "
-                                 "{:.3g} dp): it is not at rest; hold it while it settles with a gate "
+                     fmt::format("the {} moved up to {:.3g} dp while it settled ({}; water at rest moves less "
+                                 "than {:.3g} dp): it is not at rest; hold it while it settles with a gate "
                                  "(walls[].gate), or start it without settling (initial_state: lattice, or "
                                  "hydrostatic with lattice: square)",
-                                 phases[ph].name, shift_dp, limit_dp));
+                                 phases[ph].name, shift_dp, s.largest_shift_where_by_phase.at(ph), limit_dp));
   }
 }
 

@@ -120,8 +120,15 @@ Relaxation Settling<D>::finish() {
     if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
     out.largest_shift = std::max(out.largest_shift, shift.norm());
     if (P.kind[i] != Kind::fluid) continue;
-    if (out.largest_shift_by_phase.size() <= P.phase[i]) out.largest_shift_by_phase.resize(P.phase[i] + 1, 0.0);
-    out.largest_shift_by_phase[P.phase[i]] = std::max(out.largest_shift_by_phase[P.phase[i]], shift.norm());
+    if (out.largest_shift_by_phase.size() <= P.phase[i]) {
+      out.largest_shift_by_phase.resize(P.phase[i] + 1, 0.0);
+      out.largest_shift_where_by_phase.resize(P.phase[i] + 1);
+    }
+    if (shift.norm() > out.largest_shift_by_phase[P.phase[i]]) {
+      out.largest_shift_by_phase[P.phase[i]] = shift.norm();
+      out.largest_shift_where_by_phase[P.phase[i]] = fmt::format(
+          "particle {} from {} to {}", P.id[i], position_text(Vec<D>(P.position[i] - shift)), position_text(P.position[i]));
+    }
   }
   sim.set_velocity_damping(saved_damping_rate_);
   sim.set_rheology_suspended(false);

@@ -30,6 +30,8 @@ struct Relaxation {
   double residual_speed = 0.0;  // m/s, at the end, before the velocities were zeroed
   double largest_shift = 0.0;   // m, largest distance a fluid particle moved while settling
   std::vector<double> largest_shift_by_phase;  // m, the same for each phase (index: Particles::phase)
+  // Which particle of each phase moved the most, from where to where (for the message that refuses flowing water).
+  std::vector<std::string> largest_shift_where_by_phase;
 };
 
 // The error of a settling that went unstable: "settling went unstable at t = T s: REASON", T counted from the start
