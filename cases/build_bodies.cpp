@@ -15,9 +15,6 @@
 #include "cases/body_model.hpp"
 #include "cases/csv_table.hpp"
 #include "cases/scene_build.hpp"
-#include "fluid/basal_friction.hpp"
-#include "fluid/pore_pressure.hpp"
-#include "fluid/water_surface.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
@@ -258,138 +255,34 @@ void add_lattice_sums(BodyReport& rep, const std::vector<rigid::Vec2>& v, double
 // the rigid model (mass, friction, motion, ...) are left as they are: switching back uses them again.
 void add_deformable_slide(SceneBuild<2>& b, const YAML::Node& bn, const std::string& path,
                           const std::vector<rigid::Vec2>& outline, RheologyModel model) {
-  const double density = bn["density"].as<double>();
-  if (!(density > 0.0))
-    throw SceneError(path + ".density", "a deformable slide needs its density (mass is for rigid bodies)");
-  const std::string name = bn["name"].as<std::string>();
-  const Rheology rheology = read_rheology(model, bn["rheology"], path + ".rheology");
-  const std::size_t phase =
-      b.phases.add(name, density, rheology, basal_friction_coefficient(bn["basal_friction_angle"].as<double>()),
-                   path + ".name");
-  b.slides.push_back({path, outline, phase});
-  SlideReport rep;
-  rep.key = path;
-  rep.name = name;
-  rep.model = std::string(rheology_model_names.name(model));
-  rep.phase = static_cast<std::uint8_t>(phase);
-  rep.area = rigid::signed_area(outline);
-  rep.density = density;
-  const Vec<2> d = vec2(bn["front_direction"]);
-  if (d.norm() == 0.0) throw SceneError(path + ".front_direction", "must not be zero");
-  rep.front_direction = d.normalized();
+  SlideReport rep = add_slide_phase(b, bn, path, model);
+  rep.volume = rigid::signed_area(outline);
+  SceneBuild<2>::Slide slide{path, outline, rep.phase};
+  for (const auto& v : outline) slide.vertices.push_back(from_rigid(v));
+  slide.centroid = from_rigid(rigid::centroid(outline));
+  b.slides.push_back(slide);
   b.scene->slides.push_back(rep);
 }
 
-// The density its weight acts with at rest: less the water's where its centroid starts below the still-water level.
-double weight_density(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide, double density) {
-  const bool below = std::isfinite(b.still_level) && rigid::centroid(slide.outline)[1] < b.still_level;
-  return density - (below ? b.phases.phases[0].density : 0.0);
-}
-
-// Whether the slide's own weight can yield it at rest anywhere: in a block or layer at rest under its buoyant
-// weight the shear stress stays below rho' g H, H its height along gravity (on an infinite slope of angle theta the
-// base carries rho' g h sin(theta), h <= H; a free vertical side of a purely cohesive material stands up to
-// H = 3.83 c / (rho' g), the critical height of a vertical cut from Taylor's stability number 0.261), so a strength
-// at zero normal stress of rho' g H or more holds it rigid at rest. (Overhangs can carry more; the warning is for the
-// shapes slides have.)
-void warn_if_rigid_at_rest(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide, const Rheology& rheology,
-                           SlideReport& rep) {
-  double strength = 0.0;
-  if (const auto* hb = std::get_if<HerschelBulkley>(&rheology)) strength = hb->yield_stress_pa;
-  else if (const auto* mc = std::get_if<MohrCoulomb>(&rheology)) strength = mc->cohesion_pa;
-  const double g = b.sim->options.gravity.norm();
-  if (!(strength > 0.0) || g == 0.0) return;
-  const Vec<2> down = b.sim->options.gravity / g;
-  double top = std::numeric_limits<double>::infinity(), bottom = -top;
-  for (const auto& v : slide.outline) {
-    const double depth = from_rigid(v).dot(down);
-    top = std::min(top, depth), bottom = std::max(bottom, depth);
-  }
-  const double height = bottom - top;
-  const double buoyant_weight = std::abs(weight_density(b, slide, rep.density)) * g * height;  // Pa
-  if (strength < buoyant_weight) return;
-  const std::string ratio =
-      buoyant_weight > 0.0 ? fmt::format("{:.3g} times", strength / buoyant_weight) : std::string("above");
-  rep.rigid_at_rest_warning = fmt::format(
-      "{}: its strength at rest ({:.4g} Pa) is {} its buoyant weight per area over its {:.3g} m height ({:.4g} Pa), "
-      "so its own weight yields it nowhere: it stays rigid until the water loads it; {}.model: rigid models such a "
-      "slide at less cost",
-      rep.key, strength, ratio, height, buoyant_weight, rep.key);
-}
-
-// The yield criterion at rest, an infinite-slope estimate: the slide rests on the wall face its outline lies along
-// (the steepest such face, theta its angle to the plane normal to gravity, whichever way gravity points); a layer of
-// its largest thickness h normal to that face, its top at the outline's vertex furthest from the face and its base at
-// that vertex's foot on the face. With the same functions the solver uses (fluid/water_surface.hpp,
-// fluid/pore_pressure.hpp, fluid/rheology/rheology.hpp strength_at_rest):
-//   total normal stress at the base   sigma = p_w(top) + rho_s g h cos(theta)   (the water above, then the layer),
-//   pore pressure at the base         p_w(base), hydrostatic below the water's surface (0 with pore_pressure none:
-//                                     the solver's frictional strengths then take the total stress),
-//   effective normal stress           sigma' = sigma - p_w(base),
-//   basal shear stress                tau = (rho_s h - rho_w h_w) g sin(theta), h_w the layer's submerged thickness
-//                                     (its buoyant weight's component along the face; the water's head adds none);
-// it holds strength_at_rest(sigma') (tau_y, c + sigma' tan(phi), mu_s sigma', nothing), and with a basal friction mu_b
-// the wall holds mu_b sigma' at its base.
-void finish_slide_report(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide, SlideReport& rep) {
-  const Particles<2>& P = b.sim->particles();
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
-  rep.mass_particles = rep.particles * rep.density * b.dp * b.dp;
+// The face a slide rests on (the steepest its outline lies along, theta its angle to the plane normal to gravity),
+// and the layer the yield criterion takes: its top at the outline's vertex furthest from the face.
+std::optional<RestingFace<2>> resting_face_of(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide) {
   const FluidOptions<2>& opt = b.sim->options;
   const double g = opt.gravity.norm();
   const Vec<2> down = g > 0.0 ? Vec<2>(opt.gravity / g) : Vec<2>(0.0, -1.0);
   const std::optional<FaceSegment> face = resting_face(b.faces, slide.outline, b.dp, down);
-  const Rheology rheology = b.phases.phases[slide.phase].rheology;
-  warn_if_rigid_at_rest(b, slide, rheology, rep);
-  if (g > 0.0 && weight_density(b, slide, rep.density) < 0.0) {
-    rep.floats_warning = fmt::format(
-        "{}: its density ({:.4g} kg/m^3) is below the water's ({:.4g} kg/m^3) and it starts under water: it floats "
-        "up rather than slides (the model carries it up as a light phase, as it would oil)",
-        rep.key, rep.density, b.phases.phases[0].density);
-    rep.criterion = "lighter than the water it starts in: it floats up; no yield criterion at rest";
-    return;
-  }
-  if (!face || g == 0.0) {
-    rep.criterion = "rests on no wall face: no yield criterion at rest";
-    return;
-  }
-  const Vec<2> tangent = (face->b - face->a).normalized(), normal = face->inward;
-  rep.slope_angle_deg = std::asin(std::min(1.0, std::abs(tangent.dot(down)))) * 180.0 / M_PI;
-  const double theta = rep.slope_angle_deg * M_PI / 180.0;
-  // The layer: its top at the vertex furthest from the face, its base at that vertex's foot on the face.
-  double h = 0.0;
-  Vec<2> top = from_rigid(slide.outline[0]);
+  if (!face) return std::nullopt;
+  RestingFace<2> rest;
+  const Vec<2> tangent = (face->b - face->a).normalized();
+  rest.normal = face->inward;
+  rest.slope_angle_deg = std::asin(std::min(1.0, std::abs(tangent.dot(down)))) * 180.0 / M_PI;
+  rest.top = from_rigid(slide.outline[0]);
   const Vec<2> base0 = from_rigid(slide.outline[0]);
   for (const auto& v : slide.outline) {
-    const double d = std::abs((from_rigid(v) - base0).dot(normal));
-    if (d > h) h = d, top = from_rigid(v);
+    const double d = std::abs((from_rigid(v) - base0).dot(rest.normal));
+    if (d > rest.thickness) rest.thickness = d, rest.top = from_rigid(v);
   }
-  const Vec<2> base = top - h * normal;
-  // The water as the solver sees it: the first phase, when Newtonian, is the water (Simulation::pore_pressure_field).
-  const auto& water = b.phases.phases[0];
-  const bool has_water = slide.phase != 0 && std::holds_alternative<Newtonian>(water.rheology);
-  WaterSurface<2> surface;
-  if (has_water) surface.build(P, opt.gravity, b.dp, [&](std::size_t i) { return P.phase[i] == 0; });
-  const PorePressureField<2> head{water.density, g, has_water ? &surface : nullptr};
-  const bool effective = opt.pore_pressure == PorePressureModel::hydrostatic;
-  const double p_top = head.at(top), p_base = head.at(base);
-  const double total = p_top + rep.density * g * h * std::cos(theta);
-  const double normal_stress = effective_pressure(total, effective ? p_base : 0.0);
-  const double submerged = std::cos(theta) > 0.0 ? (p_base - p_top) / (water.density * g * std::cos(theta)) : 0.0;
-  rep.basal_shear_stress = (rep.density * h - water.density * submerged) * g * std::sin(theta);
-  rep.strength = strength_at_rest(rheology, normal_stress);
-  const std::string where = submerged >= h - 1e-9 ? "under water" : submerged > 0.0 ? "partly under water" : "dry";
-  rep.criterion = fmt::format(
-      "on a {:.3g} degree face, thickness {:.3g} m, {} (density {:.4g} kg/m^3; effective normal stress {:.4g} Pa at "
-      "its base, method.pore_pressure {}): basal shear stress {:.4g} Pa against {:.4g} Pa it holds: {}",
-      rep.slope_angle_deg, h, where, rep.density, normal_stress, to_string(opt.pore_pressure), rep.basal_shear_stress,
-      rep.strength, rep.basal_shear_stress <= rep.strength ? "stands at rest (rigid throughout)" : "flows");
-  // A Coulomb basal friction (fluid/basal_friction.hpp) bounds what the wall holds at the base.
-  const double mu_b = b.phases.phases[slide.phase].basal_friction;
-  if (std::isfinite(mu_b))
-    rep.criterion += fmt::format("; at its base the wall holds mu_b x effective normal stress = {:.4g} Pa: {}",
-                                 mu_b * std::max(normal_stress, 0.0),
-                                 rep.basal_shear_stress <= mu_b * std::max(normal_stress, 0.0) ? "holds" : "slides");
+  return rest;
 }
 
 }  // namespace
@@ -516,7 +409,8 @@ void place_floating_bodies(SceneBuild<2>& b) {
 }
 
 void finish_bodies(SceneBuild<2>& b) {
-  for (std::size_t k = 0; k < b.slides.size(); ++k) finish_slide_report(b, b.slides[k], b.scene->slides[k]);
+  for (std::size_t k = 0; k < b.slides.size(); ++k)
+    finish_slide_report(b, b.slides[k], resting_face_of(b, b.slides[k]), b.scene->slides[k]);
   for (std::size_t k = 0; k < b.scene->bodies.size(); ++k)
     add_lattice_sums(b.scene->bodies[k], b.outlines[k], b.dp, b.still_level, b.phases.phases[0].density);
   if (b.outlines.empty()) return;

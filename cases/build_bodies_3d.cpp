@@ -10,6 +10,7 @@
 #include <map>
 
 #include "cases/body_choices.hpp"
+#include "cases/body_model.hpp"
 #include "cases/scene_build.hpp"
 #include "cases/solid_shape.hpp"
 #include "coupling/position_text.hpp"
@@ -207,6 +208,25 @@ void place_floating_bodies(SceneBuild<3>& b) {
   }
 }
 
+// A deformable slide: its phase and shape (cut by the symmetry planes); its particles are placed with the water
+// (fill_fluid_regions). Keys of the rigid model (mass, friction, motion, ...) are left as they are: switching back
+// uses them again.
+void add_deformable_slide(SceneBuild<3>& b, const YAML::Node& bn, const std::string& path, const SolidShape& shape,
+                          RheologyModel model) {
+  check_inside_tanks(b, shape.surface, path);
+  SlideReportOf<3> rep = add_slide_phase(b, bn, path, model);
+  const rigid::MassProperties m = rigid::mass_properties(shape.surface);
+  rep.volume = m.volume;
+  SceneBuild<3>::Slide slide;
+  slide.path = path;
+  slide.phase = rep.phase;
+  slide.vertices = shape.surface.vertices;
+  slide.centroid = m.centroid;
+  slide.signed_distance = shape.signed_distance;
+  b.slides.push_back(slide);
+  b.scene->slides.push_back(rep);
+}
+
 void build_slides_and_bodies(SceneBuild<3>& b) {
   const YAML::Node list = b.r["bodies"];
   if (list.size() == 0) return;
@@ -217,6 +237,11 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     const YAML::Node bn = list[k];
     const std::string path = fmt::format("bodies[{}]", k);
     const std::string name = unique_body_name(names, bn, k);
+    const BodyModel model = body_model_names.parse(bn["model"].as<std::string>());
+    if (const auto rheology = sediment_rheology(model)) {
+      add_deformable_slide(b, bn, path, body_shape(b, bn, path, false), *rheology);
+      continue;
+    }
     const SolidShape shape = body_shape(b, bn, path, true);
     const rigid::TriangleSurface& surface = shape.surface;
     check_inside_tanks(b, surface, path);
@@ -281,7 +306,43 @@ int body_near(const SceneBuild<3>& b, const Vec<3>& p) {
   return -1;
 }
 
+namespace {
+
+// The face a slide rests on: a terrain or a tank's floor within a spacing of its lowest point (the steepest of them;
+// a terrain's face is the one nearest the slide's centroid, its normal from there to the centroid), and the layer the
+// yield criterion takes: its top at the surface's vertex furthest from that face.
+std::optional<RestingFace<3>> resting_face_of(const SceneBuild<3>& b, const SceneBuild<3>::Slide& slide) {
+  const double g = b.sim->options.gravity.norm();
+  const Vec<3> down = g > 0.0 ? Vec<3>(b.sim->options.gravity / g) : Vec<3>(0.0, 0.0, -1.0);
+  std::optional<RestingFace<3>> best;
+  const auto consider = [&](const Vec<3>& foot, const Vec<3>& normal) {
+    RestingFace<3> rest;
+    rest.normal = normal;
+    rest.slope_angle_deg = std::acos(std::min(1.0, std::abs(normal.dot(down)))) * 180.0 / M_PI;
+    rest.top = slide.vertices[0];
+    for (const auto& v : slide.vertices)
+      if ((v - foot).dot(normal) > rest.thickness) rest.thickness = (v - foot).dot(normal), rest.top = v;
+    if (!best || rest.slope_angle_deg > best->slope_angle_deg) best = rest;
+  };
+  for (const auto& t : b.terrains) {
+    double nearest = INFINITY;
+    for (const auto& v : slide.vertices) nearest = std::min(nearest, t.distance->distance(v));
+    const Vec<3> foot = t.distance->nearest_point(slide.centroid);
+    if (nearest < b.dp && (slide.centroid - foot).norm() > 0.0) consider(foot, (slide.centroid - foot).normalized());
+  }
+  for (const auto& [lo, hi] : b.tanks) {
+    double lowest = INFINITY;
+    for (const auto& v : slide.vertices) lowest = std::min(lowest, v[2]);
+    if (std::abs(lowest - lo[2]) < b.dp) consider(Vec<3>(slide.centroid[0], slide.centroid[1], lo[2]), Vec<3>::UnitZ());
+  }
+  return best;
+}
+
+}  // namespace
+
 void finish_bodies(SceneBuild<3>& b) {
+  for (std::size_t k = 0; k < b.slides.size(); ++k)
+    finish_slide_report(b, b.slides[k], resting_face_of(b, b.slides[k]), b.scene->slides[k]);
   if (b.solids.empty()) return;
   for (auto& rep : b.scene->bodies) {
     rep.displaced_area = std::isfinite(b.still_level) ? rigid::volume_below(b.solids[&rep - &b.scene->bodies[0]],

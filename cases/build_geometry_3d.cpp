@@ -11,6 +11,7 @@
 #include "cases/height_grid.hpp"
 #include "cases/scene_build.hpp"
 #include "cases/terrain_layers.hpp"
+#include "coupling/position_text.hpp"
 #include "fluid/box_walls.hpp"
 
 namespace slide::cases {
@@ -204,63 +205,126 @@ void build_walls(SceneBuild<3>& b) {
     if (b.r["walls"][w]["type"].as<std::string>() == "terrain") build_terrain(b, b.r["walls"][w], w, placed);
 }
 
-// box: the particles whose cell lies inside [min, max]; below_level: those whose cell lies inside a tank, with their
-// centre below the level (which raises the still-water level to it). Both on the scene's lattice (moved to meet its
-// planes of symmetry), on the scene's side of those planes, a point on one included (its own image).
-void fill_fluid_regions(SceneBuild<3>& b) {
-  Particles<3>& P = b.particles();
-  b.boundary_count = P.size();
-  const double dp = b.dp;
-  const LatticeKind kind = b.sim->options.lattice;
-  const Vec<3> offset = b.scene->lattice_offset;
-  const double eps = 1e-9 * dp;
-  const auto planes = symmetry_planes(b.r);
+namespace {
+
+// The deformable slide whose shape holds p (its centre strictly inside); -1 when none does. Slide and water particles
+// sit on the same lattice, so the shape alone divides them, with no gap.
+int slide_holding(const SceneBuild<3>& b, const Vec<3>& p) {
+  for (std::size_t k = 0; k < b.slides.size(); ++k)
+    if (b.slides[k].signed_distance(p) < 0.0) return static_cast<int>(k);
+  return -1;
+}
+
+// Fills the deformable slides (before the water), then the regions: box, the particles whose cell lies inside
+// [min, max] (one inside a slide is an error); below_level, those whose cell lies inside a tank, with their centre
+// below the level and outside the slides (which raises the still-water level to it). All on the scene's lattice (moved
+// to meet its planes of symmetry), on the scene's side of those planes, a point on one included (its own image), and
+// clear of the bodies and above the terrains.
+struct RegionFill {
+  SceneBuild<3>& b;
+  std::vector<SymmetryPlane> planes;
   std::vector<std::array<Vec<3>, 2>> insides;  // the tanks', closed on the planes and open above
-  for (const auto& [lo, hi] : b.tanks) {
-    insides.push_back(closed_on_planes(planes, lo, hi, eps));
-    insides.back()[1][2] = INFINITY;
+
+  explicit RegionFill(SceneBuild<3>& build) : b(build), planes(symmetry_planes(build.r)) {
+    for (const auto& [lo, hi] : b.tanks) {
+      insides.push_back(closed_on_planes(planes, lo, hi, 1e-9 * b.dp));
+      insides.back()[1][2] = INFINITY;
+    }
   }
-  for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
-    const auto rn = b.r["fluid"]["regions"][k];
-    const std::string path = fmt::format("fluid.regions[{}]", k);
-    const std::size_t ph = b.phases.find(rn["phase"].as<std::string>(), path + ".phase");
+
+  bool in_tank(const Vec<3>& p, std::size_t u) const {
+    return in_box(b.sim->options.lattice, p, insides[u][0], insides[u][1], b.dp);
+  }
+
+  // Visits the lattice points of [lo, hi] that the scene's geometry leaves to fluid, adding those `inside` accepts as
+  // phase `ph` owned by `path`; returns how many.
+  template <class Inside>
+  std::size_t fill(const Vec<3>& lo, const Vec<3>& hi, std::size_t ph, const std::string& path, Inside&& inside) {
+    Particles<3>& P = b.particles();
     const auto& phase = b.phases.phases[ph];
+    const double eps = 1e-9 * b.dp;
     std::size_t added = 0;
-    auto take = [&](const Vec<3>& p, bool inside) {
-      if (!inside || !b.in_period(p[0]) || !on_modelled_side(planes, p, eps) || body_near(b, p) >= 0 || !clear_of_terrains(b, p))
+    for_each_lattice_point(b.sim->options.lattice, b.dp, lo, hi, [&](const Vec<3>& p) {
+      if (!inside(p) || !b.in_period(p[0]) || !on_modelled_side(planes, p, eps) || body_near(b, p) >= 0 ||
+          !clear_of_terrains(b, p))
         return;
       P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
       b.fluid_owner.push_back(path);
       ++added;
-    };
-    if (rn["type"].as<std::string>() == "box") {
-      const Vec<3> lo = vec_of<3>(rn["min"]), hi = vec_of<3>(rn["max"]);
-      for (int a = 0; a < 3; ++a)
-        if (!(lo[a] < hi[a])) throw SceneError(path + ".max", "must exceed min in x, y and z");
-      const auto [in_lo, in_hi] = closed_on_planes(planes, lo, hi, eps);
-      for_each_lattice_point(kind, dp, lo, hi, [&](const Vec<3>& p) { take(p, in_box(kind, p, in_lo, in_hi, dp)); },
-                             offset);
-    } else {
-      if (b.tanks.empty()) throw SceneError(path, "a below_level region needs a tank around it");
-      const double level = rn["level"].as<double>();
-      b.still_level = std::max(b.still_level, level);
-      for (std::size_t t = 0; t < b.tanks.size(); ++t) {
-        const auto& [lo, hi] = b.tanks[t];
-        Vec<3> top = hi;
-        top[2] = std::min(hi[2], level);
-        // The tank's inside, by the lattice's rule.
-        const auto in_tank = [&](const Vec<3>& p, std::size_t u) { return in_box(kind, p, insides[u][0], insides[u][1], dp); };
-        const auto visit = [&](const Vec<3>& p) {
-          bool earlier = false;  // inside a tank already filled (tanks that overlap)
-          for (std::size_t u = 0; u < t; ++u) earlier = earlier || in_tank(p, u);
-          take(p, p[2] < top[2] && in_tank(p, t) && !earlier);  // below the level and the tank's top
-        };
-        for_each_lattice_point(kind, dp, lo, top, visit, offset);
-      }
-    }
-    if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", dp));
+    }, b.scene->lattice_offset);
+    return added;
   }
-  if (P.size() == b.boundary_count) throw SceneError("fluid.regions", "expected at least 1 item");
+
+  void refuse_if_empty(std::size_t added, const std::string& path) const {
+    if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", b.dp));
+  }
+
+  // A slide: the lattice points inside its shape (and inside a tank, where the scene has tanks).
+  void slide(std::size_t k) {
+    const auto& s = b.slides[k];
+    Vec<3> lo = s.vertices[0], hi = lo;
+    for (const auto& v : s.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    refuse_if_empty(fill(lo, hi, s.phase, s.path, [&](const Vec<3>& p) {
+                      if (s.signed_distance(p) >= 0.0) return false;
+                      bool in_a_tank = insides.empty();
+                      for (std::size_t u = 0; u < insides.size(); ++u) in_a_tank = in_a_tank || in_tank(p, u);
+                      return in_a_tank;
+                    }),
+                    s.path);
+  }
+
+  void box(const YAML::Node& rn, std::size_t ph, const std::string& path) {
+    const Vec<3> lo = vec_of<3>(rn["min"]), hi = vec_of<3>(rn["max"]);
+    for (int a = 0; a < 3; ++a)
+      if (!(lo[a] < hi[a])) throw SceneError(path + ".max", "must exceed min in x, y and z");
+    const auto [in_lo, in_hi] = closed_on_planes(planes, lo, hi, 1e-9 * b.dp);
+    refuse_if_empty(fill(lo, hi, ph, path, [&](const Vec<3>& p) {
+                      if (!in_box(b.sim->options.lattice, p, in_lo, in_hi, b.dp)) return false;
+                      if (const int k = slide_holding(b, p); k >= 0)
+                        throw SceneError(path, fmt::format("water at {} lies inside the deformable slide {}",
+                                                           position_text(p), b.slides[k].path));
+                      return true;
+                    }),
+                    path);
+  }
+
+  void below_level(const YAML::Node& rn, std::size_t ph, const std::string& path) {
+    if (b.tanks.empty()) throw SceneError(path, "a below_level region needs a tank around it");
+    const double level = rn["level"].as<double>();
+    b.still_level = std::max(b.still_level, level);
+    std::size_t added = 0;
+    for (std::size_t t = 0; t < b.tanks.size(); ++t) {
+      const auto& [lo, hi] = b.tanks[t];
+      Vec<3> top = hi;
+      top[2] = std::min(hi[2], level);
+      const auto inside = [&](const Vec<3>& p) {
+        bool earlier = false;  // inside a tank already filled (tanks that overlap)
+        for (std::size_t u = 0; u < t; ++u) earlier = earlier || in_tank(p, u);
+        // below the level and the tank's top, outside the slides
+        return p[2] < top[2] && in_tank(p, t) && !earlier && slide_holding(b, p) < 0;
+      };
+      added += fill(lo, top, ph, path, inside);
+    }
+    refuse_if_empty(added, path);
+  }
+};
+
+}  // namespace
+
+void fill_fluid_regions(SceneBuild<3>& b) {
+  Particles<3>& P = b.particles();
+  b.boundary_count = P.size();
+  if (b.r["fluid"]["regions"].size() == 0 && b.slides.empty())
+    throw SceneError("fluid.regions", "expected at least 1 item (a scene without water needs a deformable slide)");
+  RegionFill fill(b);
+  for (std::size_t k = 0; k < b.slides.size(); ++k) fill.slide(k);
+  for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
+    const auto rn = b.r["fluid"]["regions"][k];
+    const std::string path = fmt::format("fluid.regions[{}]", k);
+    const std::size_t ph = b.phases.find(rn["phase"].as<std::string>(), path + ".phase");
+    if (rn["type"].as<std::string>() == "box") fill.box(rn, ph, path);
+    else fill.below_level(rn, ph, path);
+  }
   b.lo = b.hi = P.position[0];
   for (const auto& x : P.position) b.lo = b.lo.cwiseMin(x), b.hi = b.hi.cwiseMax(x);
 }

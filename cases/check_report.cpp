@@ -178,10 +178,14 @@ std::string phases_and_slides(const Scene<D>& scene) {
     out += fmt::format("phase {:<9} {} kg/m^3, {}, {}\n", p.name, p.density_kg_m3, model_name(p.rheology),
                        basal_condition(p.basal_friction, sim.options.wall_slip));
   out += fmt::format("viscous scheme  {}\n", to_string(sim.options.viscous_scheme));
+  // Per unit width in 2-D: an area and kg/m; in 3-D a volume and kg.
+  const std::string size = D == 2 ? "area" : "volume", size_unit = D == 2 ? "m^2" : "m^3";
+  const std::string mass_unit = D == 2 ? "kg/m" : "kg";
   for (const auto& s : scene.slides)
-    out += fmt::format("slide {:<9} deformable ({}), {} particles, area {:.6g} m^2, mass {:.6g} kg/m (particles {:.6g})\n"
+    out += fmt::format("slide {:<9} deformable ({}), {} particles, {} {:.6g} {}, mass {:.6g} {} (particles {:.6g})\n"
                        "  at rest         {}\n",
-                       s.name, s.model, s.particles, s.area, s.density * s.area, s.mass_particles, s.criterion);
+                       s.name, s.model, s.particles, size, s.volume, size_unit, s.density * s.volume, mass_unit,
+                       s.mass_particles, s.criterion);
   for (const auto& s : scene.slides)
     if (!s.rigid_at_rest_warning.empty()) out += "warning: " + s.rigid_at_rest_warning + "\n";
   for (const auto& s : scene.slides)

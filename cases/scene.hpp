@@ -89,15 +89,16 @@ struct BodyReportOf {
 using BodyReport = BodyReportOf<2>;
 
 // A deformable slide (bodies[k] with a model other than rigid): sediment particles of its own phase.
-struct SlideReport {
+template <int D>
+struct SlideReportOf {
   std::string name;
   std::string model;             // herschel_bulkley, ...
   std::uint8_t phase = 0;        // Particles::phase of its particles
   std::size_t particles = 0;
-  double area = 0.0;             // m^2 per unit width, of the outline
+  double volume = 0.0;           // of its shape: m^2 per unit width in 2-D (its outline's area), m^3 in 3-D
   double density = 0.0;          // kg/m^3
-  double mass_particles = 0.0;   // kg/m, particles x density x dp^2
-  Vec<2> front_direction = Vec<2>(1.0, 0.0);  // unit
+  double mass_particles = 0.0;   // particles x density x dp^D: kg/m in 2-D, kg in 3-D
+  Vec<D> front_direction = Vec<D>::Unit(0);  // unit
   // The yield criterion at rest (infinite-slope estimate on the face it rests on): the basal shear stress of the
   // buoyant layer against what the material holds, and the verdict.
   double slope_angle_deg = 0.0;
@@ -114,6 +115,7 @@ struct SlideReport {
   std::string floats_warning;
   std::string key;                  // bodies[k]
 };
+using SlideReport = SlideReportOf<2>;
 
 template <int D>
 struct Scene {
@@ -135,7 +137,7 @@ struct Scene {
   std::size_t gate_particles = 0;  // boundary particles of gates (walls[].gate), taken away at t = 0
   std::optional<EquilibriumColumn> equilibrium;  // the hydrostatic start's column, when used
   std::vector<BodyReportOf<D>> bodies;
-  std::vector<SlideReport> slides;
+  std::vector<SlideReportOf<D>> slides;
   std::vector<double> slide_outline_times;  // s, increasing
   std::optional<SlideShapesSpec> slide_shapes;
   std::optional<GaugeRecordsSpec> gauge_records;

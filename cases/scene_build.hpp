@@ -91,8 +91,11 @@ struct SceneBuild {
   std::vector<std::function<double(const Vec<3>&)>> solid_distance;  // 3-D: each one's signed distance, m
   struct Slide {
     std::string path;  // bodies[k]
-    std::vector<rigid::Vec2> outline;
+    std::vector<rigid::Vec2> outline;  // 2-D
     std::size_t phase = 0;
+    std::vector<Vec<D>> vertices;  // its outline's (2-D) or surface's (3-D), m
+    Vec<D> centroid = Vec<D>::Zero();  // of its shape, m
+    std::function<double(const Vec<3>&)> signed_distance;  // 3-D: m from its surface, < 0 inside
   };
   std::vector<Slide> slides;
   std::size_t boundary_count = 0;  // particles before the first fluid particle
@@ -123,7 +126,26 @@ void place_floating_bodies(SceneBuild<3>& b);     // build_bodies_3d.cpp
 void build_walls(SceneBuild<2>& b);               // build_walls.cpp
 void build_walls(SceneBuild<3>& b);               // build_geometry_3d.cpp
 void build_slides_and_bodies(SceneBuild<2>& b);   // build_bodies.cpp
-void build_slides_and_bodies(SceneBuild<3>& b);   // build_bodies_3d.cpp (rigid bodies so far)
+void build_slides_and_bodies(SceneBuild<3>& b);   // build_bodies_3d.cpp
+// build_slides.cpp: a deformable slide's phase (named after bodies[k], of its density and rheology) and its report's
+// first fields; the particles come with the water (fill_fluid_regions), the rest of the report with finish_bodies.
+template <int D>
+SlideReportOf<D> add_slide_phase(SceneBuild<D>& b, const YAML::Node& body, const std::string& path,
+                                 RheologyModel model);
+// Where a slide rests: the face's unit normal out of it, its angle to the plane normal to gravity, and the layer that
+// the yield criterion at rest takes: its top (the slide's point furthest from the face) and its thickness there, m.
+template <int D>
+struct RestingFace {
+  Vec<D> normal;
+  double slope_angle_deg = 0.0;
+  Vec<D> top;
+  double thickness = 0.0;
+};
+// build_slides.cpp: the report's particle count and mass, its warnings (lighter than the water it starts in; strong
+// enough to stand rigid at rest) and its yield criterion at rest on the face it rests on (none: no criterion).
+template <int D>
+void finish_slide_report(const SceneBuild<D>& b, const typename SceneBuild<D>::Slide& slide,
+                         const std::optional<RestingFace<D>>& face, SlideReportOf<D>& rep);
 int body_near(const SceneBuild<3>& b, const Vec<3>& p);  // build_bodies_3d.cpp: the body p is in or near, or -1
 void fill_fluid_regions(SceneBuild<2>& b);        // build_fluid_regions.cpp
 void fill_fluid_regions(SceneBuild<3>& b);        // build_geometry_3d.cpp

@@ -436,10 +436,14 @@ Schema body_schema_3d() {
   return S::map(
       "a floating or sliding rigid body: a Bullet solid (mass, centre of mass and inertia tensor from its closed "
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
-      "its faces) exchange forces with the fluid. 3-D so far: boxes, spheres, cylinders, convex prisms and convex "
-      "meshes, free, on a rail or moved by the ln cosh law (time series and deformable slides are 2-D only yet); a "
-      "tank's symmetry sides cut it (walls[].symmetry)",
+      "its faces) exchange forces with the fluid; any other model fills the same shape with sediment particles of "
+      "that rheology (a deformable slide: a phase named after the body, of its density), so that one key switches a "
+      "slide between rigid and deformable. 3-D so far: boxes, spheres, cylinders, convex prisms and convex meshes, "
+      "free, on a rail or moved by the ln cosh law (time series are 2-D only yet); a tank's symmetry sides cut it "
+      "(walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
+       {"model",
+        S::choice("what the body is made of", body_model_names.names(), std::string(to_string(BodyModel::rigid)))},
        {"shape",
         S::variant("the body's shape", "type",
                    {{"box", S::map("a box", {{"center", S::vector("centre", "m", 3, std::nullopt)},
@@ -491,6 +495,12 @@ Schema body_schema_3d() {
                           0.0, 0.0, S::inf)},
        {"friction", S::number("Coulomb friction coefficient against walls", "", 0.0, 0.0, 10.0)},
        {"restitution", S::number("restitution coefficient against walls", "", 0.0, 0.0, 1.0)},
+       {"rheology", rheology_parameters_schema()},
+       {"basal_friction_angle",
+        basal_friction_angle_schema("; deformable slides only (a rigid body's Coulomb coefficient against walls is "
+                                    "`friction`, which a deformable slide ignores: its default 0 would be frictionless)")},
+       {"front_direction", S::vector("deformable slides: slide_front.csv's front is the particle furthest along this "
+                                     "direction", "", 3, std::vector<double>{1.0, 0.0, 0.0})},
        {"locked", S::list("components held fixed: x, y, z (translations), rx, ry, rz (rotations about the axes)",
                           S::choice("component", {"x", "y", "z", "rx", "ry", "rz"}, std::nullopt))},
        {"motion",
@@ -548,9 +558,10 @@ Schema make_schema_3d() {
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 3, std::vector<double>{0.0, 0.0, -9.81})},
        {"domain", domain_schema_3d()},
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
-                                      {"regions", S::list("regions filled with fluid", region_schema_3d(), 1)}})},
+                                      {"regions", S::list("regions filled with fluid (none: a dry scene, whose only fluid is its "
+                                                          "deformable slides)", region_schema_3d(), 0)}})},
        {"walls", S::list("walls", wall_schema_3d())},
-       {"bodies", S::list("rigid bodies (floating boxes)", body_schema_3d())},
+       {"bodies", S::list("slides and floating bodies, rigid or deformable", body_schema_3d())},
        {"rigid", rigid_schema()},
        {"method", method_schema(3)},
        {"time_step", time_step_schema()},
