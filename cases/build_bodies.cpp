@@ -264,6 +264,9 @@ void add_deformable_slide(SceneBuild<2>& b, const YAML::Node& bn, const std::str
   b.scene->slides.push_back(rep);
 }
 
+
+}  // namespace
+
 // The face a slide rests on (the steepest its outline lies along, theta its angle to the plane normal to gravity),
 // and the layer the yield criterion takes: its top at the outline's vertex furthest from the face.
 std::optional<RestingFace<2>> resting_face_of(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide) {
@@ -284,8 +287,6 @@ std::optional<RestingFace<2>> resting_face_of(const SceneBuild<2>& b, const Scen
   }
   return rest;
 }
-
-}  // namespace
 
 std::vector<rigid::Vec2> body_outline(const YAML::Node& bn, const std::string& path) {
   std::vector<rigid::Vec2> outline;

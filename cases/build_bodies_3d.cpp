@@ -306,8 +306,6 @@ int body_near(const SceneBuild<3>& b, const Vec<3>& p) {
   return -1;
 }
 
-namespace {
-
 // The face a slide rests on: a terrain or a tank's floor within a spacing of its lowest point (the steepest of them;
 // a terrain's face is the one nearest the slide's centroid, its normal from there to the centroid), and the layer the
 // yield criterion takes: its top at the surface's vertex furthest from that face.
@@ -337,8 +335,6 @@ std::optional<RestingFace<3>> resting_face_of(const SceneBuild<3>& b, const Scen
   }
   return best;
 }
-
-}  // namespace
 
 void finish_bodies(SceneBuild<3>& b) {
   for (std::size_t k = 0; k < b.slides.size(); ++k)

@@ -206,13 +206,11 @@ void plan_settling(SceneBuild<D>& b) {
   if (b.initial_state != InitialState::settled) return;
   const YAML::Node m = r["method"];
   SettlingPlan<D> plan{m["settling_time"].as<double>(), m["settling_damping"].as<double>(), {}};
-  if constexpr (D == 2) {
-    const Vec<2>& g = b.sim->options.gravity;
-    const Vec<2> down = g.norm() > 0.0 ? Vec<2>(g.normalized()) : Vec<2>(0.0, -1.0);
-    for (const auto& s : b.slides) {
-      const auto face = resting_face(b.faces, s.outline, b.dp, down);
-      plan.held.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<2>(-face->inward) : down});
-    }
+  const Vec<D>& g = b.sim->options.gravity;
+  const Vec<D> down = g.norm() > 0.0 ? Vec<D>(g.normalized()) : Vec<D>(-Vec<D>::Unit(D - 1));
+  for (const auto& s : b.slides) {
+    const auto face = resting_face_of(b, s);
+    plan.held.push_back({static_cast<std::uint8_t>(s.phase), face ? Vec<D>(-face->normal) : down});
   }
   b.scene->pending_settling = plan;
 }

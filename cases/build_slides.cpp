@@ -9,6 +9,7 @@
 
 #include "cases/body_model.hpp"
 #include "cases/scene_build.hpp"
+#include "cases/solid_shape.hpp"
 #include "fluid/basal_friction.hpp"
 #include "fluid/pore_pressure.hpp"
 #include "fluid/water_surface.hpp"
@@ -133,9 +134,19 @@ template <int D>
 void finish_slide_report(const SceneBuild<D>& b, const typename SceneBuild<D>::Slide& slide,
                          const std::optional<RestingFace<D>>& face, SlideReportOf<D>& rep) {
   const Particles<D>& P = b.sim->particles();
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == Kind::fluid && P.phase[i] == slide.phase) ++rep.particles;
-  rep.mass_particles = rep.particles * rep.density * std::pow(b.dp, D);
+  // A particle on a plane of symmetry is its own image: half of it lies on the modelled side (one on two planes, a
+  // quarter).
+  double modelled = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid || P.phase[i] != slide.phase) continue;
+    ++rep.particles;
+    double share = 1.0;
+    if constexpr (D == 3)
+      for (const SymmetryPlane& plane : symmetry_planes(b.r))
+        if (plane.holds(P.position[i], 1e-9 * b.dp)) share *= 0.5;
+    modelled += share;
+  }
+  rep.mass_particles = modelled * rep.density * std::pow(b.dp, D);
   const double g = b.sim->options.gravity.norm();
   warn_if_rigid_at_rest(b, slide, b.phases.phases[slide.phase].rheology, rep);
   if (g > 0.0 && weight_density(b, slide, rep.density) < 0.0) {

@@ -122,7 +122,20 @@ rigid::TriangleSurface terrain_surface(const HeightGrid& g) {
   return s;
 }
 
-double terrain_height(const HeightGrid& g, double x, double y) {
+namespace {
+
+// v moved onto [lo, hi]'s nearer end when it lies outside by at most `slack`.
+double onto_edge(double v, double lo, double hi, double slack) {
+  if (v < lo && v >= lo - slack) return lo;
+  if (v > hi && v <= hi + slack) return hi;
+  return v;
+}
+
+}  // namespace
+
+double terrain_height(const HeightGrid& g, double x, double y, double edge_slack) {
+  x = onto_edge(x, g.x.front(), g.x.back(), edge_slack);
+  y = onto_edge(y, g.y.front(), g.y.back(), edge_slack);
   if (x < g.x.front() || x > g.x.back() || y < g.y.front() || y > g.y.back()) return NAN;
   const std::size_t i = std::min<std::size_t>(std::upper_bound(g.x.begin(), g.x.end(), x) - g.x.begin(), g.x.size() - 1) - 1;
   const std::size_t j = std::min<std::size_t>(std::upper_bound(g.y.begin(), g.y.end(), y) - g.y.begin(), g.y.size() - 1) - 1;

@@ -28,7 +28,10 @@ HeightGrid read_height_grid(const std::filesystem::path& file);
 // The grid's surface, its triangles facing up (out of the ground).
 rigid::TriangleSurface terrain_surface(const HeightGrid& g);
 
-// The surface's height at (x, y) on its triangles; NaN outside the grid.
-double terrain_height(const HeightGrid& g, double x, double y);
+// The surface's height at (x, y) on its triangles; NaN outside the grid. A point outside it by at most `edge_slack` (m)
+// takes the edge's height: a lattice point on a symmetry plane along the grid's edge, its coordinates rounded, lies
+// on the edge (without the slack a slide there, 1e-14 m beside a grid whose edge the scene rounded, had no terrain
+// under it and fell through while it settled).
+double terrain_height(const HeightGrid& g, double x, double y, double edge_slack = 0.0);
 
 }  // namespace slide::cases

@@ -141,6 +141,10 @@ struct RestingFace {
   Vec<D> top;
   double thickness = 0.0;
 };
+// The face a slide rests on and the layer above it, or none (build_bodies.cpp: the steepest wall face its outline lies
+// along; build_bodies_3d.cpp: the steepest terrain or tank floor within a spacing of it).
+std::optional<RestingFace<2>> resting_face_of(const SceneBuild<2>& b, const SceneBuild<2>::Slide& slide);
+std::optional<RestingFace<3>> resting_face_of(const SceneBuild<3>& b, const SceneBuild<3>::Slide& slide);
 // build_slides.cpp: the report's particle count and mass, its warnings (lighter than the water it starts in; strong
 // enough to stand rigid at rest) and its yield criterion at rest on the face it rests on (none: no criterion).
 template <int D>

@@ -21,8 +21,8 @@ Vec<3> terrain_normal(const HeightGrid& g, double x, double y) {
 
 }  // namespace
 
-bool above_terrain(const HeightGrid& grid, const Vec<3>& p) {
-  const double h = terrain_height(grid, p[0], p[1]);
+bool above_terrain(const HeightGrid& grid, const Vec<3>& p, double edge_slack) {
+  const double h = terrain_height(grid, p[0], p[1], edge_slack);
   return std::isnan(h) || p[2] > h;
 }
 
@@ -33,12 +33,14 @@ std::vector<BoundaryPointOf<3>> terrain_layers(const HeightGrid& g, const mesh::
   const double spacing = row_spacing(kind, dp), eps = 1e-9 * dp;
   std::vector<BoundaryPointOf<3>> out;
   const auto visit = [&](const Vec<3>& p) {
-    if (above_terrain(g, p) || std::isnan(terrain_height(g, p[0], p[1]))) return;
+    if (above_terrain(g, p, eps) || std::isnan(terrain_height(g, p[0], p[1], eps))) return;
     const Vec<3> nearest = distance.nearest_point(p);
     const double depth = (nearest - p).norm();
     if (depth > reach + eps) return;
     // A point on the surface itself takes the normal of the triangle under it.
-    const Vec<3> normal = depth > eps ? Vec<3>((nearest - p) / depth) : terrain_normal(g, p[0], p[1]);
+    const Vec<3> normal = depth > eps ? Vec<3>((nearest - p) / depth)
+                                      : terrain_normal(g, std::clamp(p[0], g.x.front(), g.x.back()),
+                                                       std::clamp(p[1], g.y.front(), g.y.back()));
     out.push_back({p, normal, depth, static_cast<int>(std::floor(depth / spacing + 1e-9))});
   };
   for_each_lattice_point(kind, dp, lo, hi, visit, offset);

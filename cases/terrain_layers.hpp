@@ -21,8 +21,8 @@
 
 namespace slide::cases {
 
-// Whether p stands above the terrain (or beside it: outside its grid).
-bool above_terrain(const HeightGrid& grid, const Vec<3>& p);
+// Whether p stands above the terrain (or beside it: outside its grid by more than `edge_slack`, m).
+bool above_terrain(const HeightGrid& grid, const Vec<3>& p, double edge_slack);
 
 // The lattice's points (moved by `offset`, as the water's) under the grid's surface within `reach` of it (m; the
 // kernel's radius), inside its grid.

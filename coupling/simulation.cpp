@@ -47,15 +47,11 @@ void Simulation<D>::check_periodic_setup() const {
 }
 
 // Planes of symmetry (options.mirrors): every boundary particle on their modelled side, two planes on one axis far enough
-// apart that a particle is near one of them at most, none along a periodic x, and no implicit viscous solve (its
-// matrix would take a mirror image's velocity as its source's, without the sign of the normal component).
+// apart that a particle is near one of them at most, and none along a periodic x.
 template <int D>
 void Simulation<D>::check_mirror_setup() const {
   const auto& M = options.mirrors;
   if (M.empty()) return;
-  if (options.viscous_scheme == ViscousScheme::implicit)
-    throw std::invalid_argument("planes of symmetry cannot be combined with the implicit viscosity yet: its matrix "
-                                "does not mirror the velocity of a particle's image");
   for (std::size_t k = 0; k < M.size(); ++k) {
     if (M[k].axis < 0 || M[k].axis >= D) throw std::invalid_argument("a plane of symmetry's axis is not one of the scene's");
     if (options.periodic_x && M[k].axis == 0)

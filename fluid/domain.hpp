@@ -50,6 +50,15 @@ class Domain {
 
   std::size_t owned_count() const { return particles.real_count(); }
 
+  // The axes (bit a: axis a) of the planes of symmetry that owned particle i lies on (fluid/mirror_plane.hpp, holds,
+  // within the last make_ghosts' depth): it is its own image across them, and its velocity across them is zero.
+  std::uint8_t planes_holding(std::size_t i) const {
+    std::uint8_t axes = 0;
+    for (const MirrorPlane& m : layout_.mirrors)
+      if (m.holds(particles.position[i][m.axis], ghost_depth_)) axes = static_cast<std::uint8_t>(axes | (1u << m.axis));
+    return axes;
+  }
+
   // Before the owned particles are re-sorted or removed: the ghosts go (every array back to the owned particles).
   void drop_ghosts() {
     if (layout_.any()) remove_ghosts(particles);

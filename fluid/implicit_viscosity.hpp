@@ -20,6 +20,16 @@
 // u~, to the fluid and, through body particles, to the bodies: momentum is then exchanged exactly, whatever the
 // solver's tolerance, and the result differs from u~ only by the solver's residual.
 //
+// Images (fluid/ghosts.hpp). A periodic image's velocity is its source's, a mirror image's its source's with the
+// components across the plane negated: a fluid neighbour that is an image of unknown s enters s's column with the sign
+// of the image for each component (so a component's matrix differs from another's where mirrors flip it; each stays
+// symmetric, as the image of i near s is flipped like that of s near i, and diagonally dominant), and an image of the
+// row's own particle enters its diagonal: a (1 - sign) for u_i's coupling to its image, 0 for a periodic image's.
+// A particle on a plane of symmetry has no image (it is its own) but its neighbours' images count: the system it
+// belongs to is the whole one restricted to mirror-symmetric velocities, whose rows are the modelled side's with the
+// on-plane particle's row weighted by its share of the modelled side (1/2 per plane it lies on), so that the matrix
+// stays symmetric; its velocity across such a plane is zero (hold_on_planes), which its row and column then say.
+//
 // Which particles are unknowns. Write the system A u~ = b, A = R + K, R = diag(rho_i), and let a fluid particle's
 // viscous number be s_i = (sum of its row's off-diagonal and wall coefficients) / rho_i = dt c (sum_fluid mu_ij W_ij
 // + sum_wall mu_i f_ij W_ij) / rho_i (viscous_row_number below): the fraction of its velocity difference that
@@ -36,6 +46,8 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -136,8 +148,41 @@ class ImplicitViscosity {
   std::vector<int> row_of_;        // particle -> unknown (-1: not an unknown)
   std::vector<std::uint32_t> particle_of_;  // unknown -> particle
   std::vector<int> row_start_;
+  std::vector<int> diagonal_at_;      // unknown -> its diagonal's place in the values
+  std::vector<std::uint8_t> flip_;    // per stored value: the axes its image negates (0: a real neighbour's)
+  std::vector<std::array<double, 3>> own_image_;  // unknown -> the diagonal's share from its own images, per axis
+  std::vector<std::uint8_t> on_planes_;  // unknown -> the axes of the planes of symmetry it lies on
   Matrix matrix_;  // compressed row storage, filled in place
+  Matrix component_;  // the matrix of one velocity component, where images flip it
+
+  // The matrix of velocity component d: matrix_ with the values of images flipped along d negated, and each row's own
+  // images added to its diagonal; matrix_ itself without images.
+  const Matrix& matrix_of(int d, bool images);
 };
+
+inline const ImplicitViscosity::Matrix& ImplicitViscosity::matrix_of(int d, bool images) {
+  if (!images) return matrix_;
+  component_ = matrix_;
+  double* value = component_.valuePtr();
+  const int* column = component_.innerIndexPtr();
+  for (std::size_t k = 0; k < flip_.size(); ++k) {
+    if (flip_[k] >> d & 1) value[k] = -value[k];
+    if (on_planes_[static_cast<std::size_t>(column[k])] >> d & 1) value[k] = 0.0;  // a velocity held at zero
+  }
+  for (std::size_t r = 0; r < own_image_.size(); ++r) {
+    const int first = row_start_[r], last = row_start_[r + 1];
+    if (on_planes_[r] >> d & 1) {  // u_r,d = 0: the row of the identity
+      std::fill(value + first, value + last, 0.0);
+      value[diagonal_at_[r]] = 1.0;
+      continue;
+    }
+    value[diagonal_at_[r]] += own_image_[r][d];
+    if (on_planes_[r] == 0) continue;
+    const double share = std::ldexp(1.0, -std::popcount(on_planes_[r]));
+    for (int k = first; k < last; ++k) value[k] *= share;
+  }
+  return component_;
+}
 
 template <int D>
 ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborList& nl, double re, double n0,
@@ -178,7 +223,9 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
   row_start_.assign(rows + 1, 0);
   parallel_for(rows, [&](std::size_t r) {
     int count = 1;
-    auto fluid = [&](std::uint32_t j, double) { count += row_of_[P.real_index(j)] >= 0; };
+    auto fluid = [&](std::uint32_t j, double) {
+      count += row_of_[P.real_index(j)] >= 0 && P.real_index(j) != particle_of_[r];
+    };
     for_each_viscous_coupling<D>(particle_of_[r], P, nl, re, wall, fluid, [](std::uint32_t, double) {});
     row_start_[r + 1] = count;
   });
@@ -188,6 +235,12 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
   std::copy(row_start_.begin(), row_start_.end(), matrix_.outerIndexPtr());
   int* column = matrix_.innerIndexPtr();
   double* value = matrix_.valuePtr();
+  flip_.assign(static_cast<std::size_t>(row_start_[rows]), 0);
+  diagonal_at_.assign(rows, 0);
+  own_image_.assign(rows, {0.0, 0.0, 0.0});
+  on_planes_.assign(rows, 0);
+  std::uint8_t* flip = flip_.data();
+  const std::size_t real = P.real_count();
   Eigen::Matrix<double, Eigen::Dynamic, D> rhs(rows, D), u(rows, D);
 
   // Rows: off-diagonals -dt c mu_ij W_ij, the diagonal rho_i + dt c (sum mu_ij W_ij + sum_wall mu_i f_ij W_ij),
@@ -207,13 +260,20 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
         b += a * P.velocity[j];
         return;
       }
+      const std::uint8_t image_flip = j < real ? 0 : P.ghost_flip[j - real];
+      if (col == static_cast<int>(r)) {  // its own image: -a u_image = -a sign u_i on the diagonal
+        for (int d = 0; d < D; ++d) own_image_[r][d] -= (image_flip >> d & 1) ? -a : a;
+        return;
+      }
       int at = k++;
       for (; at > first && column[at - 1] > col; --at) {
         column[at] = column[at - 1];
         value[at] = value[at - 1];
+        flip[at] = flip[at - 1];
       }
       column[at] = col;
       value[at] = -a;
+      flip[at] = image_flip;
     };
     auto wall_pair = [&](std::uint32_t j, double coupling) {
       const double a = dt * c * coupling;
@@ -225,9 +285,18 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
     for (; at > first && column[at - 1] > static_cast<int>(r); --at) {
       column[at] = column[at - 1];
       value[at] = value[at - 1];
+      flip[at] = flip[at - 1];
     }
     column[at] = static_cast<int>(r);
     value[at] = diagonal;
+    flip[at] = 0;
+    diagonal_at_[r] = at;
+    on_planes_[r] = domain.planes_holding(i);
+    if (on_planes_[r] != 0) {  // its share of the modelled side (matrix_of); zero across the planes it lies on
+      b *= std::ldexp(1.0, -std::popcount(on_planes_[r]));
+      for (int d = 0; d < D; ++d)
+        if (on_planes_[r] >> d & 1) b[d] = 0.0;
+    }
     rhs.row(r) = b.transpose();
     u.row(r) = P.velocity[i].transpose();
   });
@@ -235,12 +304,19 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
   Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
   cg.setTolerance(tolerance);
   cg.setMaxIterations(max_iterations);
-  cg.compute(matrix_);
+  // Whether an image enters any row (otherwise every component shares matrix_).
+  const bool images = std::any_of(flip_.begin(), flip_.end(), [](std::uint8_t f) { return f != 0; }) ||
+                      std::any_of(on_planes_.begin(), on_planes_.end(), [](std::uint8_t f) { return f != 0; }) ||
+                      std::any_of(own_image_.begin(), own_image_.end(), [](const auto& o) {
+                        return o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0;
+                      });
+  if (!images) cg.compute(matrix_);
   for (int d = 0; d < D; ++d) {
     if (rhs.col(d).squaredNorm() == 0.0) {
       u.col(d).setZero();
       continue;
     }
+    if (images) cg.compute(matrix_of(d, true));
     Eigen::VectorXd x = cg.solveWithGuess(rhs.col(d), u.col(d));
     u.col(d) = x;
     report.iterations = std::max(report.iterations, static_cast<int>(cg.iterations()));

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "fluid/lattice.hpp"
+#include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
 #include "tests/sediment_block.hpp"
 
@@ -209,6 +210,82 @@ TEST(SlopeSlide, WaterAndSlideStartOnTheSlopesRows) {
   EXPECT_LT(water_nearest, 1.5 * h + 1e-9 * dp);
   EXPECT_NEAR(slide_lowest, 0.5 * h, 1e-6 * dp);  // the scene states the face to 9 significant digits
   EXPECT_GE(water_to_slide, dp * (1.0 - 1e-9));
+}
+
+
+// The same stiff block in 3-D (issue 31: a deformable slide in 3-D is the same one key): a 45 degree terrain on the
+// fcc lattice, whose points below a plane at 45 degrees across x-z form whole (101) lattice planes, so the slope is
+// flat at the lattice's scale, with no staircase; a slab of the flume between planes of symmetry (y = 0 and y = 10
+// plane spacings: a quasi-2-D flume, which needs the semi-implicit viscous solve with mirror images), the block cut
+// by them. The terrain's grid ends on the planes, its edge rounded to 12 digits (cases/height_grid.hpp, edge_slack).
+std::string block_on_slope_3d(double dp, double end_time) {
+  const double b = 45.0 * M_PI / 180.0, length = 1.2, top = length * std::sin(b), toe = length * std::cos(b);
+  const double w = 10.0 * fcc_plane_spacing(dp);
+  const Vec<2> along(std::cos(b), -std::sin(b)), normal(std::sin(b), std::cos(b));
+  const Vec<2> centre = Vec<2>(0.0, top) + 0.45 * along + (0.05 + 1e-5) * normal;
+  const auto dir = fresh_directory("slope_3d");
+  write_file(dir / "slope.csv", fmt::format("y\\x,-0.3,0,{2:.12g},{3:.12g}\n0,{1:.12g},{1:.12g},0,0\n{0:.12g},{1:.12g},"
+                                            "{1:.12g},0,0\n",
+                                            w, top, toe, toe + 1.0));
+  return fmt::format(R"(dimension: 3
+particle_spacing: {dp}
+end_time: {end}
+fluid:
+  phases: [{{name: water, density: 1000, rheology: {{model: newtonian, viscosity: 1.0e-3}}}}]
+  regions: []
+walls:
+  - {{name: tank, type: tank, min: [-0.3, 0, 0], max: [{x_end:.12g}, {w:.12g}, {z_top:.12g}], symmetry: [y_min, y_max]}}
+  - {{name: slope, type: terrain, file: {dir}/slope.csv}}
+bodies:
+  - name: block
+    model: herschel_bulkley
+    shape: {{type: box, center: [{cx:.12g}, {cy:.12g}, {cz:.12g}], size: [0.2, {wide:.12g}, 0.1], angles: [0, 45, 0]}}
+    density: 2000
+    rheology: {{yield_stress: 20000, consistency: 1, flow_index: 1}}
+    basal_friction_angle: 0
+    front_direction: [{ax:.12g}, 0, {az:.12g}]
+method: {{initial_state: settled, settling_time: 0.2}}
+output: {{snapshots: false}}
+)",
+                     fmt::arg("dp", dp), fmt::arg("end", end_time), fmt::arg("x_end", toe + 1.0), fmt::arg("w", w),
+                     fmt::arg("z_top", top + 0.2), fmt::arg("dir", dir.string()), fmt::arg("cx", centre[0]),
+                     fmt::arg("cy", 0.5 * w), fmt::arg("cz", centre[1]), fmt::arg("wide", 2.0 * w),
+                     fmt::arg("ax", along[0]), fmt::arg("az", along[1]));
+}
+
+// g sin(beta) within 2 %, as the 2-D tests ask. Measured over 0.3 s: -1.74 % at dp 0.02 (the block 5 spacings thick;
+// this test, 12 s), and the block's velocity across the flume 1e-7 m/s.
+TEST(SlopeSlide, FrictionlessBlockOnA3DTerrain) {
+  const double dp = 0.02;
+  auto scene = build_scene_text<3>("slope_3d_scene", block_on_slope_3d(dp, 0.3));
+  ASSERT_EQ(scene->slides.size(), 1u);
+  const std::uint8_t phase = scene->slides[0].phase;
+  const double b = 45.0 * M_PI / 180.0;
+  const Vec<3> along(std::cos(b), 0.0, -std::sin(b));
+  const auto centre_along = [&](const Particles<3>& P) {
+    double sum = 0.0;
+    long n = 0;
+    for (std::size_t i = 0; i < P.real_count(); ++i)
+      if (P.kind[i] == Kind::fluid && P.phase[i] == phase) sum += P.position[i].dot(along), ++n;
+    return sum / n;
+  };
+  auto& sim = *scene->simulation;
+  const double s0 = centre_along(sim.particles());
+  std::vector<double> t{0.0}, s{0.0};
+  double across = 0.0;  // the largest y velocity: the flume's planes keep the block from turning sideways
+  EXPECT_TRUE(run_scene<3>(*scene, [&](const Simulation<3>& sm) {
+    t.push_back(sm.time());
+    s.push_back(centre_along(sm.particles()) - s0);
+    const auto& P = sm.particles();
+    for (std::size_t i = 0; i < P.real_count(); ++i)
+      if (P.kind[i] == Kind::fluid && P.phase[i] == phase) across = std::max(across, std::abs(P.velocity[i][1]));
+  }));
+  const double a = fitted_acceleration(t, s), exact = g * std::sin(b);
+  std::printf("3-D fcc terrain, dp %.3g, 45 deg, frictionless: %.4f m/s^2 against g sin(beta) %.4f (%+.2f %%); "
+              "largest speed across the flume %.3g m/s\n",
+              dp, a, exact, 100.0 * (a / exact - 1.0), across);
+  EXPECT_NEAR(a, exact, 0.02 * exact);
+  EXPECT_LT(across, 0.01 * a * 0.3);  // a hundredth of its speed down the slope
 }
 
 }  // namespace

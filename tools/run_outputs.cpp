@@ -145,12 +145,17 @@ RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const std::filesystem::p
   if (!scene.profiles.times.empty())
     profiles_.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
   if (!scene.slides.empty()) {
-    slide_front_.emplace(out / "slide_front.csv", std::vector<std::string>{"time", "slide", "front_x", "front_y",
-                                                                           "front_along", "thickness_max", "particles"});
+    std::vector<std::string> cols{"time", "slide", "front_x", "front_y"};
+    if (D == 3) cols.push_back("front_z");
+    for (const char* c : {"front_along", "thickness_max", "particles"}) cols.push_back(c);
+    slide_front_.emplace(out / "slide_front.csv", cols);
   }
-  // Rigid bodies' upper surfaces too, so that one scene's two slide models compare alike.
+  // Rigid bodies' upper surfaces too, so that one scene's two slide models compare alike: 2-D, a line (x, y); 3-D, a
+  // height map (x, y, z).
   if ((!scene.slides.empty() || sim_.bodies()) && !scene.slide_outline_times.empty())
-    slide_outline_.emplace(out / "slide_outline.csv", std::vector<std::string>{"time", "slide", "x", "y"});
+    slide_outline_.emplace(out / "slide_outline.csv",
+                           D == 2 ? std::vector<std::string>{"time", "slide", "x", "y"}
+                                  : std::vector<std::string>{"time", "slide", "x", "y", "z"});
   if (scene.slide_shapes && (!scene.slides.empty() || sim_.bodies()))
     slide_shapes_.emplace(out / "slide_shapes.csv",
                           std::vector<std::string>{"time", "slide", "time_measured", "front_measured", "front_model",
@@ -234,53 +239,52 @@ void RunOutputs<D>::sample_profiles() {
 // largest thickness over columns of width 2 dp, and its particle count (coupling/slide_front.hpp).
 template <int D>
 void RunOutputs<D>::sample_slides() {
-  if constexpr (D == 2) {  // 2-D scenes only so far
-    if (!slide_front_) return;
-    const double dp = sim_.options.dp;
-    for (const auto& s : scene_.slides) {
-      const SlideFront f = measure_slide_front(sim_.particles(), s.phase, s.front_direction, dp, 2.0 * dp);
-      const double row[] = {f.front[0], f.front[1], s.front_direction.dot(f.front), f.thickness_max,
-                            double(f.particles)};
-      slide_front_->add_labelled_row(sim_.time(), s.name, row);
-    }
+  if (!slide_front_) return;
+  const double dp = sim_.options.dp;
+  for (const auto& s : scene_.slides) {
+    const SlideFrontOf<D> f = measure_slide_front(sim_.particles(), s.phase, s.front_direction, dp, 2.0 * dp);
+    std::vector<double> row(f.front.begin(), f.front.end());
+    for (const double v : {s.front_direction.dot(f.front), f.thickness_max, double(f.particles)}) row.push_back(v);
+    slide_front_->add_labelled_row(sim_.time(), s.name, row);
   }
 }
 
 // Every slide's upper surface now, in columns of 2 dp (coupling/slide_front.hpp), and its front: the deformable slides'
-// from their particles, then the rigid bodies' from their outlines.
+// from their particles, then the rigid bodies': in 2-D from their outlines, in 3-D from their wall particles.
 template <int D>
 std::vector<std::pair<std::string, typename RunOutputs<D>::ModelSurface>> RunOutputs<D>::model_surfaces() const {
   std::vector<std::pair<std::string, ModelSurface>> out;
-  if constexpr (D == 2) {  // 2-D scenes only so far
-    const double dp = sim_.options.dp, width = 2.0 * dp;
-    for (const auto& s : scene_.slides) {
-      const SlideFront f = measure_slide_front(sim_.particles(), s.phase, Vec<2>(1.0, 0.0), dp, width);
-      out.push_back({s.name, {slide_upper_surface(sim_.particles(), s.phase, dp, width), f.front[0] + 0.5 * dp}});
-    }
-    if (const auto& bodies = sim_.bodies())
-      for (std::size_t b = 0; b < bodies->size(); ++b) {
+  const double dp = sim_.options.dp, width = 2.0 * dp;
+  for (const auto& s : scene_.slides) {
+    const SlideFrontOf<D> f = measure_slide_front(sim_.particles(), s.phase, Vec<D>(Vec<D>::Unit(0)), dp, width);
+    out.push_back({s.name, {slide_upper_surface(sim_.particles(), s.phase, dp, width), f.front[0] + 0.5 * dp}});
+  }
+  if (const auto& bodies = sim_.bodies())
+    for (std::size_t b = 0; b < bodies->size(); ++b) {
+      if constexpr (D == 2) {
         const std::vector<Vec<2>> outline = bodies->outline_now(int(b));
         double front = -std::numeric_limits<double>::infinity();
         for (const auto& v : outline) front = std::max(front, v[0]);
         out.push_back({bodies->names[b], {polygon_upper_surface(outline, width), front}});
+      } else {
+        auto surface = body_upper_surface(sim_.particles(), int(b), dp, width);
+        double front = -std::numeric_limits<double>::infinity();
+        for (const auto& v : surface) front = std::max(front, v[0] + 0.5 * width);
+        out.push_back({bodies->names[b], {std::move(surface), front}});
       }
-  }
+    }
   return out;
 }
 
 // The slides' upper surfaces at the scene's outline times (the first step at or after each).
 template <int D>
 void RunOutputs<D>::sample_slide_outlines() {
-  if constexpr (D == 2) {  // 2-D scenes only so far
-    const auto& times = scene_.slide_outline_times;
-    while (slide_outline_ && next_outline_ < times.size() && sim_.time() >= times[next_outline_] - 1e-12) {
-      for (const auto& [name, m] : model_surfaces())
-        for (const auto& p : m.surface) {
-          const double row[] = {p[0], p[1]};
-          slide_outline_->add_labelled_row(sim_.time(), name, row);
-        }
-      ++next_outline_;
-    }
+  const auto& times = scene_.slide_outline_times;
+  while (slide_outline_ && next_outline_ < times.size() && sim_.time() >= times[next_outline_] - 1e-12) {
+    for (const auto& [name, m] : model_surfaces())
+      for (const auto& p : m.surface)
+        slide_outline_->add_labelled_row(sim_.time(), name, std::vector<double>(p.begin(), p.end()));
+    ++next_outline_;
   }
 }
 

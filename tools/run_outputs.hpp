@@ -66,7 +66,7 @@ class RunOutputs : public StepObserver<D> {
   void sample_slide_shapes();
   void write_gauge_records() const;
   struct ModelSurface {
-    std::vector<Vec<2>> surface;  // column centres and tops, increasing x
+    std::vector<Vec<D>> surface;  // column centres and tops, increasing x (then y)
     double front = 0.0;           // m, the largest x the material reaches
   };
   std::vector<std::pair<std::string, ModelSurface>> model_surfaces() const;
