@@ -164,6 +164,45 @@ TEST(Scene3D, BoxBodyHasItsLayersAndTheWaterKeepsClearOfIt) {
   EXPECT_EQ(scene->simulation->bodies()->size(), 1u);
 }
 
+// A deformable slide (the same body, model herschel_bulkley): its particles are the lattice points inside the box
+// (4 x 4 x 2 cell centres on the cubic lattice), of its own phase named after it; the water fills the rest of the
+// tank on the same lattice, with no gap and none inside it; the report has the volume and mass in 3-D units. One key
+// switches it back to a rigid body. A box region that reaches into it is refused naming the region.
+TEST(Scene3D, DeformableSlideFillsItsShapeAndOneKeyMakesItRigid) {
+  const std::string body = "bodies: [{name: sand, model: herschel_bulkley, shape: {type: box, center: [0.05, 0.05, "
+                           "0.02], size: [0.04, 0.04, 0.02]}, density: 1800, rheology: {yield_stress: 50}}]\n";
+  const auto scene = build_scene<3>(load_scene_text(tank_scene("square", body), {}), "s");
+  ASSERT_EQ(scene->slides.size(), 1u);
+  const auto& rep = scene->slides[0];
+  EXPECT_EQ(rep.particles, 32u);
+  EXPECT_NEAR(rep.volume, 0.04 * 0.04 * 0.02, 1e-18);
+  EXPECT_NEAR(rep.mass_particles, 32 * 1800.0 * 1e-6, 1e-12);
+  EXPECT_TRUE(scene->bodies.empty());
+  EXPECT_FALSE(scene->simulation->bodies());
+  const auto& P = scene->simulation->particles();
+  std::size_t sand = 0, water = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::fluid) continue;
+    const Vec<3> d = (P.position[i] - Vec<3>(0.05, 0.05, 0.02)).cwiseAbs() - Vec<3>(0.02, 0.02, 0.01);
+    if (P.phase[i] == rep.phase) {
+      ++sand;
+      EXPECT_LT(d.maxCoeff(), 0.0);
+    } else {
+      ++water;
+      EXPECT_GT(d.maxCoeff(), 0.0) << "water at " << P.position[i].transpose();
+    }
+  }
+  EXPECT_EQ(sand, 32u);
+  EXPECT_EQ(water, 1000u - 32u);  // 10 x 10 x 10 cells below the level, less the slide's
+  const auto rigid = build_scene<3>(load_scene_text(tank_scene("square", body), {"bodies[0].model=rigid"}), "r");
+  EXPECT_TRUE(rigid->slides.empty());
+  EXPECT_EQ(rigid->bodies.size(), 1u);
+  std::string overlap = tank_scene("square", body);
+  overlap.replace(overlap.find("regions: [{type: below_level, level: 0.1}]"), 42,
+                  "regions: [{type: box, min: [0, 0, 0], max: [0.1, 0.1, 0.03]}]");
+  EXPECT_EQ(refusal_key(overlap), "fluid.regions[0]");
+}
+
 // A prism: a right-angled triangle (legs 0.04 m, given clockwise) in its frame's x-y plane, swept 0.04 m along the
 // frame's z, turned by roll 90 degrees so that the triangle lies in the scene's x-z plane and the prism runs across y
 // (a 2-D wedge extruded): in the world, x - cx >= -0.02, z - cz >= -0.02, (x - cx) + (z - cz) <= 0, |y - cy| <= 0.02.
