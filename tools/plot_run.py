@@ -11,6 +11,7 @@ overlaid, e.g. resolutions, or a free and a prescribed run).
 Uses Debian's python3-matplotlib, python3-numpy and python3-h5py through /usr/bin/python3."""
 import csv
 import json
+import math
 import os
 import sys
 
@@ -184,10 +185,17 @@ def plot_slides(runs, target):
             rows = read_csv(outline)
             for time in sorted({r["time"] for r in rows}, key=float):
                 mine = [r for r in rows if r["time"] == time]
-                shape.plot([float(r["x"]) for r in mine], [float(r["y"]) for r in mine], ".-", markersize=3,
-                           label=f"t = {float(time):.2f} s: {label_of(run)}")
+                if "z" in mine[0]:  # 3-D: a height map; its side view, the highest z of each x column over y
+                    top = {}
+                    for r in mine:
+                        top[float(r["x"])] = max(top.get(float(r["x"]), -math.inf), float(r["z"]))
+                    xs, ys = sorted(top), [top[x] for x in sorted(top)]
+                else:
+                    xs, ys = [float(r["x"]) for r in mine], [float(r["y"]) for r in mine]
+                shape.plot(xs, ys, ".-", markersize=3, label=f"t = {float(time):.2f} s: {label_of(run)}")
     front.set(xlabel="t (s)", ylabel="m", title="slide front (distance along its direction) and largest thickness")
-    shape.set(xlabel="x (m)", ylabel="y (m)", title="slide upper surface", aspect="equal")
+    shape.set(xlabel="x (m)", ylabel="height (m): y in 2-D, z in 3-D (the highest over y)", title="slide upper surface",
+              aspect="equal")
     front.legend(fontsize=7)
     shape.legend(fontsize=7)
     fig.tight_layout()
