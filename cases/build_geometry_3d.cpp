@@ -158,7 +158,8 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w,
 
 // Whether water may stand at p as far as the terrains go: above each one it covers (cases/terrain_layers.hpp).
 bool clear_of_terrains(const SceneBuild<3>& b, const Vec<3>& p) {
-  return std::all_of(b.terrains.begin(), b.terrains.end(), [&](const auto& t) { return above_terrain(t.grid, p, 1e-9 * b.dp); });
+  return std::all_of(b.terrains.begin(), b.terrains.end(),
+                     [&](const auto& t) { return above_terrain(t.grid, p, 1e-9 * b.dp); });
 }
 
 }  // namespace

@@ -498,7 +498,8 @@ Schema body_schema_3d() {
        {"rheology", rheology_parameters_schema()},
        {"basal_friction_angle",
         basal_friction_angle_schema("; deformable slides only (a rigid body's Coulomb coefficient against walls is "
-                                    "`friction`, which a deformable slide ignores: its default 0 would be frictionless)")},
+                                    "`friction`, which a deformable slide ignores: its default 0 would be "
+                                    "frictionless)")},
        {"front_direction", S::vector("deformable slides: slide_front.csv's front is the particle furthest along this "
                                      "direction", "", 3, std::vector<double>{1.0, 0.0, 0.0})},
        {"locked", S::list("components held fixed: x, y, z (translations), rx, ry, rz (rotations about the axes)",
@@ -558,8 +559,9 @@ Schema make_schema_3d() {
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 3, std::vector<double>{0.0, 0.0, -9.81})},
        {"domain", domain_schema_3d()},
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
-                                      {"regions", S::list("regions filled with fluid (none: a dry scene, whose only fluid is its "
-                                                          "deformable slides)", region_schema_3d(), 0)}})},
+                                      {"regions", S::list("regions filled with fluid (none: a dry scene, whose only fluid "
+                                                          "is its deformable slides)",
+                                                          region_schema_3d(), 0)}})},
        {"walls", S::list("walls", wall_schema_3d())},
        {"bodies", S::list("slides and floating bodies, rigid or deformable", body_schema_3d())},
        {"rigid", rigid_schema()},

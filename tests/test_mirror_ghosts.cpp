@@ -154,7 +154,8 @@ Place place_of(const Vec<3>& x) {
 void expect_quarter_is_the_whole(bool with_box, const std::string& lattice = "square",
                                  const std::string& phase = "{name: water, density: 1000}",
                                  const std::vector<std::string>& overrides = {}) {
-  const auto whole = cases::build_scene<3>(cases::load_scene_text(tank(false, with_box, lattice, phase), overrides), "w");
+  const auto whole =
+      cases::build_scene<3>(cases::load_scene_text(tank(false, with_box, lattice, phase), overrides), "w");
   const auto quarter =
       cases::build_scene<3>(cases::load_scene_text(tank(true, with_box, lattice, phase), overrides), "q");
   auto& W = *whole->simulation;
