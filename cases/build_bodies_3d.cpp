@@ -223,6 +223,9 @@ void add_deformable_slide(SceneBuild<3>& b, const YAML::Node& bn, const std::str
   slide.vertices = shape.surface.vertices;
   slide.centroid = m.centroid;
   slide.signed_distance = shape.signed_distance;
+  slide.lo = slide.hi = slide.vertices[0];
+  for (const auto& v : slide.vertices) slide.lo = slide.lo.cwiseMin(v), slide.hi = slide.hi.cwiseMax(v);
+  slide.lo.array() -= b.dp, slide.hi.array() += b.dp;  // a lattice point on a cut face may lie beyond it by rounding
   b.slides.push_back(slide);
   b.scene->slides.push_back(rep);
 }

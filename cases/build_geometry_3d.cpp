@@ -211,8 +211,13 @@ namespace {
 // The deformable slide whose shape holds p (its centre strictly inside); -1 when none does. Slide and water particles
 // sit on the same lattice, so the shape alone divides them, with no gap.
 int slide_holding(const SceneBuild<3>& b, const Vec<3>& p) {
-  for (std::size_t k = 0; k < b.slides.size(); ++k)
-    if (b.slides[k].signed_distance(p) < 0.0) return static_cast<int>(k);
+  for (std::size_t k = 0; k < b.slides.size(); ++k) {
+    const auto& s = b.slides[k];
+    // Its surface's bounding box first: the signed distance (a ray-parity test) for every water point was the cost.
+    bool in_box = true;
+    for (int a = 0; a < 3; ++a) in_box = in_box && p[a] >= s.lo[a] && p[a] <= s.hi[a];
+    if (in_box && s.signed_distance(p) < 0.0) return static_cast<int>(k);
+  }
   return -1;
 }
 
@@ -263,9 +268,7 @@ struct RegionFill {
   // A slide: the lattice points inside its shape (and inside a tank, where the scene has tanks).
   void slide(std::size_t k) {
     const auto& s = b.slides[k];
-    Vec<3> lo = s.vertices[0], hi = lo;
-    for (const auto& v : s.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-    refuse_if_empty(fill(lo, hi, s.phase, s.path, [&](const Vec<3>& p) {
+    refuse_if_empty(fill(s.lo, s.hi, s.phase, s.path, [&](const Vec<3>& p) {
                       if (s.signed_distance(p) >= 0.0) return false;
                       bool in_a_tank = insides.empty();
                       for (std::size_t u = 0; u < insides.size(); ++u) in_a_tank = in_a_tank || in_tank(p, u);

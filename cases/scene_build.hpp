@@ -96,6 +96,7 @@ struct SceneBuild {
     std::vector<Vec<D>> vertices;  // its outline's (2-D) or surface's (3-D), m
     Vec<D> centroid = Vec<D>::Zero();  // of its shape, m
     std::function<double(const Vec<3>&)> signed_distance;  // 3-D: m from its surface, < 0 inside
+    Vec<D> lo = Vec<D>::Zero(), hi = Vec<D>::Zero();       // 3-D: its surface's bounding box, m
   };
   std::vector<Slide> slides;
   std::size_t boundary_count = 0;  // particles before the first fluid particle
