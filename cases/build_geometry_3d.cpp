@@ -1,5 +1,5 @@
 // Steps of a 3-D scene's geometry (dimension: 3): its walls (tanks: fluid/box_walls.hpp; terrains:
-// cases/terrain_layers.hpp), its fluid regions (box, below_level inside the tanks) on the scene's lattice, and its
+// cases/terrain_layers.hpp), its fluid regions (box, below_level inside the tanks, the inside of a shape) on the scene's lattice, and its
 // particle count estimated before any is made.
 #include <fmt/format.h>
 
@@ -292,6 +292,27 @@ struct RegionFill {
                     path);
   }
 
+  // The lattice points strictly inside the shape; one outside every tank (where there are tanks) or inside a slide is
+  // an error naming the region.
+  void shape(const YAML::Node& rn, std::size_t ph, const std::string& path) {
+    const SolidShape s = region_solid_shape(rn["shape"], path, b.dp, b.scene_dir);
+    Vec<3> lo = s.surface.vertices[0], hi = lo;
+    for (const auto& v : s.surface.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    refuse_if_empty(fill(lo, hi, ph, path, [&](const Vec<3>& p) {
+                      if (s.signed_distance(p) >= 0.0) return false;
+                      bool in_a_tank = insides.empty();
+                      for (std::size_t u = 0; u < insides.size(); ++u) in_a_tank = in_a_tank || in_tank(p, u);
+                      if (!in_a_tank)
+                        throw SceneError(path + ".shape", fmt::format("water at {} lies outside every tank",
+                                                                      position_text(p)));
+                      if (const int k = slide_holding(b, p); k >= 0)
+                        throw SceneError(path, fmt::format("water at {} lies inside the deformable slide {}",
+                                                           position_text(p), b.slides[k].path));
+                      return true;
+                    }),
+                    path);
+  }
+
   void below_level(const YAML::Node& rn, std::size_t ph, const std::string& path) {
     if (b.tanks.empty()) throw SceneError(path, "a below_level region needs a tank around it");
     const double level = rn["level"].as<double>();
@@ -326,7 +347,9 @@ void fill_fluid_regions(SceneBuild<3>& b) {
     const auto rn = b.r["fluid"]["regions"][k];
     const std::string path = fmt::format("fluid.regions[{}]", k);
     const std::size_t ph = b.phases.find(rn["phase"].as<std::string>(), path + ".phase");
-    if (rn["type"].as<std::string>() == "box") fill.box(rn, ph, path);
+    const std::string type = rn["type"].as<std::string>();
+    if (type == "box") fill.box(rn, ph, path);
+    else if (type == "shape") fill.shape(rn, ph, path);
     else fill.below_level(rn, ph, path);
   }
   b.lo = b.hi = P.position[0];
@@ -338,10 +361,14 @@ void fill_fluid_regions(SceneBuild<3>& b) {
 double estimated_particles(const SceneBuild<3>& b) {
   const double dp = b.dp, cell = dp * dp * dp;
   double n = 0.0, level = -INFINITY;
-  for (const auto& rn : b.r["fluid"]["regions"]) {
-    if (rn["type"].as<std::string>() == "box") {
+  for (std::size_t k = 0; k < b.r["fluid"]["regions"].size(); ++k) {
+    const auto rn = b.r["fluid"]["regions"][k];
+    const std::string type = rn["type"].as<std::string>();
+    if (type == "box") {
       const Vec<3> size = (vec_of<3>(rn["max"]) - vec_of<3>(rn["min"])).cwiseMax(0.0);
       n += size.prod() / cell;
+    } else if (type == "shape") {
+      n += region_solid_shape(rn["shape"], fmt::format("fluid.regions[{}]", k), dp, b.scene_dir).whole_volume / cell;
     } else {
       level = std::max(level, rn["level"].as<double>());
     }

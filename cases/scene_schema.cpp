@@ -361,6 +361,56 @@ Schema dimension_schema() {
                     2L, 2L, 3L);
 }
 
+// A 3-D shape (a body's, a water region's): box, sphere, cylinder, prism or a closed mesh from a file
+// (cases/solid_shape.hpp).
+Schema shape_schema_3d(const std::string& description) {
+  return S::variant(description, "type",
+                   {{"box", S::map("a box", {{"center", S::vector("centre", "m", 3, std::nullopt)},
+                                             {"size", S::vector("edge lengths along its own x, y, z", "m", 3,
+                                                                std::nullopt, 0.0)},
+                                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
+                                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
+                    {"sphere", S::map("a sphere", {{"center", S::vector("centre", "m", 3, std::nullopt)},
+                                                   {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true,
+                                                                        false)}})},
+                    {"cylinder",
+                     S::map("a circular cylinder about its own z axis",
+                            {{"center", S::vector("centre (half way along its axis)", "m", 3, std::nullopt)},
+                             {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true, false)},
+                             {"height", S::number("length along its axis", "m", std::nullopt, 0.0, S::inf, true, false)},
+                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv); 0: axis along z",
+                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
+                    {"prism",
+                     S::map("a right prism: a convex polygon in the body frame's x-y plane swept along the frame's z "
+                            "(a 2-D slide's cross-section extruded: with angles [90, 0, 0] the outline's (x, y) lie "
+                            "in the scene's (x, z) and the prism runs across y)",
+                            {{"center", S::vector("where the frame's origin goes (half way along the prism)", "m", 3,
+                                                  std::nullopt)},
+                             {"outline", point_list("vertices in the frame's x-y plane, either way round (closed "
+                                                    "automatically; convex)",
+                                                    3)},
+                             {"length", S::number("length along the frame's z", "m", std::nullopt, 0.0, S::inf, true,
+                                                  false)},
+                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
+                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
+                    {"mesh",
+                     S::map("a closed triangle mesh from a file (a body's convex so far; a water region's any), checked before anything runs: closed, "
+                            "its faces consistently and outward oriented, a positive volume, no face cutting another "
+                            "(mesh/closed_mesh.hpp); a point x of the file goes to position + R (scale x)",
+                            {{"file", S::text("an .stl (binary or ASCII) or .obj file, relative to the scene's folder",
+                                              std::nullopt)},
+                             {"scale", S::number("factor on the file's coordinates (e.g. 0.001 for millimetres)", "",
+                                                 1.0, 0.0, S::inf, true, false)},
+                             {"position", S::vector("where the file's origin goes", "m", 3,
+                                                    std::vector<double>{0.0, 0.0, 0.0})},
+                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
+                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv), about the file's "
+                                                  "origin", "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}});
+}
+
 // 3-D scenes (dimension: 3): the keys that exist in 3-D so far (issue 31 grows them: meshes, terrain).
 Schema region_schema_3d() {
   return S::variant(
@@ -374,7 +424,12 @@ Schema region_schema_3d() {
        {"below_level", S::map("water below a level inside the tanks: every lattice point of a tank's inside (by the "
                               "box rule) below the level and the tank's top",
                               {{"phase", S::text("phase name (default: the first phase)", "")},
-                               {"level", S::number("still-water level (z)", "m", std::nullopt)}})}});
+                               {"level", S::number("still-water level (z)", "m", std::nullopt)}})},
+       {"shape", S::map("the lattice points strictly inside a shape (a mesh may be concave: a pond, a reservoir's "
+                        "basin); its points must lie inside the tanks where the scene has any, and outside the "
+                        "deformable slides",
+                        {{"phase", S::text("phase name (default: the first phase)", "")},
+                         {"shape", shape_schema_3d("the region's shape")}})}});
 }
 
 Schema wall_schema_3d() {
@@ -444,52 +499,7 @@ Schema body_schema_3d() {
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"model",
         S::choice("what the body is made of", body_model_names.names(), std::string(to_string(BodyModel::rigid)))},
-       {"shape",
-        S::variant("the body's shape", "type",
-                   {{"box", S::map("a box", {{"center", S::vector("centre", "m", 3, std::nullopt)},
-                                             {"size", S::vector("edge lengths along its own x, y, z", "m", 3,
-                                                                std::nullopt, 0.0)},
-                                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
-                                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
-                                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
-                    {"sphere", S::map("a sphere", {{"center", S::vector("centre", "m", 3, std::nullopt)},
-                                                   {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true,
-                                                                        false)}})},
-                    {"cylinder",
-                     S::map("a circular cylinder about its own z axis",
-                            {{"center", S::vector("centre (half way along its axis)", "m", 3, std::nullopt)},
-                             {"radius", S::number("radius", "m", std::nullopt, 0.0, S::inf, true, false)},
-                             {"height", S::number("length along its axis", "m", std::nullopt, 0.0, S::inf, true, false)},
-                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
-                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv); 0: axis along z",
-                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
-                    {"prism",
-                     S::map("a right prism: a convex polygon in the body frame's x-y plane swept along the frame's z "
-                            "(a 2-D slide's cross-section extruded: with angles [90, 0, 0] the outline's (x, y) lie "
-                            "in the scene's (x, z) and the prism runs across y)",
-                            {{"center", S::vector("where the frame's origin goes (half way along the prism)", "m", 3,
-                                                  std::nullopt)},
-                             {"outline", point_list("vertices in the frame's x-y plane, either way round (closed "
-                                                    "automatically; convex)",
-                                                    3)},
-                             {"length", S::number("length along the frame's z", "m", std::nullopt, 0.0, S::inf, true,
-                                                  false)},
-                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
-                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
-                                                  "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
-                    {"mesh",
-                     S::map("a closed triangle mesh from a file (convex so far), checked before anything runs: closed, "
-                            "its faces consistently and outward oriented, a positive volume, no face cutting another "
-                            "(mesh/closed_mesh.hpp); a point x of the file goes to position + R (scale x)",
-                            {{"file", S::text("an .stl (binary or ASCII) or .obj file, relative to the scene's folder",
-                                              std::nullopt)},
-                             {"scale", S::number("factor on the file's coordinates (e.g. 0.001 for millimetres)", "",
-                                                 1.0, 0.0, S::inf, true, false)},
-                             {"position", S::vector("where the file's origin goes", "m", 3,
-                                                    std::vector<double>{0.0, 0.0, 0.0})},
-                             {"angles", S::vector("orientation as roll, pitch, yaw (Tait-Bryan z-y'-x'': "
-                                                  "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv), about the file's "
-                                                  "origin", "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})}})},
+       {"shape", shape_schema_3d("the body's shape")},
        {"density", S::number("density of the body; 0 = give mass instead", "kg/m^3", 0.0, 0.0, S::inf)},
        {"mass", S::number("mass (the whole body's where a symmetry side cuts it); 0 = density times volume", "kg",
                           0.0, 0.0, S::inf)},

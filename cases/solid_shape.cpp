@@ -132,7 +132,7 @@ double box_signed_distance(const Vec<3>& p, const Vec<3>& centre, const Vec<3>& 
 // The surface in bodies[k].shape.file, placed: a file point x goes to position + R (scale x). Throws SceneError naming
 // the key, the file and its defect.
 rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& path, const std::filesystem::path& scene_dir,
-                                   const rigid::Mat3& axes) {
+                                   const rigid::Mat3& axes, bool must_be_convex) {
   const std::filesystem::path file = scene_dir / shape["file"].as<std::string>();
   rigid::TriangleSurface m;
   try {
@@ -147,7 +147,7 @@ rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& p
   for (const auto& v : m.vertices) size = std::max(size, (v - m.vertices[0]).norm());
   // Bullet takes a moving body's convex hull, the symmetry cut and the collision inset are written for convex shapes.
   // The tolerance allows an STL's float coordinates (6e-8 of its size) on coplanar faces.
-  if (!rigid::is_convex(m, 1e-6 * size))
+  if (must_be_convex && !rigid::is_convex(m, 1e-6 * size))
     throw SceneError(path + ".shape.file", fmt::format("{}: it is not convex, and a body's mesh must be so far (a concave "
                                                        "moving body needs a convex decomposition, not yet built)",
                                                        file.string()));
@@ -221,18 +221,15 @@ rigid::TriangleSurface prism_of(const YAML::Node& shape, const std::string& path
   return rigid::prism_surface(vertices, shape["length"].as<double>(), centre, axes);
 }
 
-}  // namespace
-
-bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < whole_volume * (1.0 - 1e-12); }
-
-SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
-                       double dp, int layers, const std::filesystem::path& scene_dir) {
+// The whole shape, before any symmetry cut; a mesh must be convex where `body` (Bullet takes its hull).
+SolidShape whole_shape(const YAML::Node& shape, const std::string& path, double dp, int layers,
+                       const std::filesystem::path& scene_dir, bool body) {
   SolidShape s;
   const std::string type = shape["type"].as<std::string>();
   const Vec<3> centre = type == "mesh" ? Vec<3>::Zero() : vec_of<3>(shape["center"]);
   if (type == "mesh") {
     s.axes = axes_of(shape);
-    s.surface = placed_mesh(shape, path, scene_dir, s.axes);
+    s.surface = placed_mesh(shape, path, scene_dir, s.axes, body);
     from_its_surface(s, path, dp, layers);
   } else if (type == "prism") {
     s.axes = axes_of(shape);
@@ -278,6 +275,21 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     };
   }
   s.whole_volume = rigid::mass_properties(s.surface).volume;
+  return s;
+}
+
+}  // namespace
+
+bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < whole_volume * (1.0 - 1e-12); }
+
+SolidShape region_solid_shape(const YAML::Node& shape, const std::string& path, double dp,
+                              const std::filesystem::path& scene_dir) {
+  return whole_shape(shape, path, dp, 0, scene_dir, false);
+}
+
+SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
+                       double dp, int layers, const std::filesystem::path& scene_dir) {
+  SolidShape s = whole_shape(shape, path, dp, layers, scene_dir, true);
   for (const auto& plane : planes) {
     try {
       s.surface = rigid::clip_convex(s.surface, plane.normal, plane.offset);

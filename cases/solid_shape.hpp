@@ -52,6 +52,11 @@ struct SolidShape {
 SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
                        double dp, int layers, const std::filesystem::path& scene_dir);
 
+// A water region's shape (fluid.regions[k] of type shape, `path` its key path): the whole shape, not cut by the planes
+// of symmetry (the fill keeps the scene's side of them), without boundary points; a mesh may be concave.
+SolidShape region_solid_shape(const YAML::Node& shape, const std::string& path, double dp,
+                              const std::filesystem::path& scene_dir);
+
 // The key of a shape that says where it is: `center`, or a mesh's `position` (where the file's origin goes).
 const char* placement_key(const YAML::Node& shape);
 

@@ -396,9 +396,9 @@ TEST(Scene3D, MeshBodyIsTheBodyItsFileDescribes) {
   EXPECT_LT(double(wall_layer), outer / 1e-4);
 }
 
-TEST(Scene3D, RefusesABadMeshNamingTheKeyAndTheFile) {
-  const auto dir = testing::fresh_directory("mesh_refusals");
-  // An L-shaped prism: closed and outward, but not convex.
+// An L-shaped prism, closed and outward but not convex: the square [0.03, 0.07]^2 less its quarter x, y > 0.05, over
+// z in [0.04, 0.06].
+rigid::TriangleSurface ell_prism() {
   rigid::TriangleSurface ell = rigid::prism_surface({{0, 0}, {0.04, 0}, {0.04, 0.02}, {0.02, 0.02}, {0.02, 0.04}, {0, 0.04}},
                                                     0.02, rigid::Vec3(0.03, 0.03, 0.05));
   // prism_surface fans its caps from the first corner, which is wrong for a concave outline: the L's caps by hand.
@@ -414,7 +414,51 @@ TEST(Scene3D, RefusesABadMeshNamingTheKeyAndTheFile) {
     ell.triangles.push_back({i, j, n + j});
     ell.triangles.push_back({i, n + j, n + i});
   }
-  testing::write_obj(dir / "ell.obj", ell);
+  return ell;
+}
+
+// Water inside a shape (fluid.regions[] type shape): a concave mesh holds the cell centres strictly inside it, counted
+// by hand (the L's 12 cells of dp across, 2 deep: 24), none in its notch; a box given as a mesh holds the same points as
+// the box region; water outside the tank or inside a slide is refused naming the region.
+TEST(Scene3D, WaterRegionFillsTheInsideOfAShapeEvenAConcaveMesh) {
+  const auto dir = testing::fresh_directory("water_shapes");
+  testing::write_obj(dir / "ell.obj", ell_prism());
+  testing::write_stl_binary(dir / "box.stl", rigid::box_surface(rigid::Vec3(0.05, 0.04, 0.033),
+                                                                rigid::Vec3(0.061, 0.05, 0.043)));
+  const std::string below = "regions: [{type: below_level, level: 0.1}]";
+  const auto with_region = [&](const std::string& region, const std::string& extra = "") {
+    std::string text = tank_scene("fcc", extra);
+    return text.replace(text.find(below), below.size(), "regions: [" + region + "]");
+  };
+  const auto water = [&](const std::string& text) {
+    const auto scene = build_scene<3>(load_scene_text(text, {}), "s", dir);
+    std::vector<Vec<3>> points;
+    const auto& P = scene->simulation->particles();
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.kind[i] == Kind::fluid) points.push_back(P.position[i]);
+    return points;
+  };
+  std::string ell_scene = tank_scene("square");
+  ell_scene.replace(ell_scene.find(below), below.size(), "regions: [{type: shape, shape: {type: mesh, file: ell.obj}}]");
+  const auto ell = water(ell_scene);
+  EXPECT_EQ(ell.size(), 24u);
+  for (const auto& p : ell) EXPECT_FALSE(p[0] > 0.05 && p[1] > 0.05) << "water in the notch at " << p.transpose();
+  const auto as_mesh = water(with_region("{type: shape, shape: {type: mesh, file: box.stl}}"));
+  const auto as_box = water(with_region("{type: box, min: [0.0195, 0.015, 0.0115], max: [0.0805, 0.065, 0.0545]}"));
+  ASSERT_GT(as_box.size(), 100u);
+  EXPECT_EQ(as_mesh, as_box);
+  EXPECT_EQ(refusal_key(with_region("{type: shape, shape: {type: sphere, center: [0.09, 0.05, 0.05], radius: 0.03}}")),
+            "fluid.regions[0].shape");
+  const std::string sand = "bodies: [{name: sand, model: herschel_bulkley, shape: {type: box, center: [0.05, 0.05, "
+                           "0.02], size: [0.04, 0.04, 0.02]}, density: 1800, rheology: {yield_stress: 50}}]\n";
+  EXPECT_EQ(refusal_key(with_region("{type: shape, shape: {type: sphere, center: [0.05, 0.05, 0.04], radius: 0.02}}",
+                                    sand)),
+            "fluid.regions[0]");
+}
+
+TEST(Scene3D, RefusesABadMeshNamingTheKeyAndTheFile) {
+  const auto dir = testing::fresh_directory("mesh_refusals");
+  testing::write_obj(dir / "ell.obj", ell_prism());
   rigid::TriangleSurface open_box = rigid::box_surface(rigid::Vec3(0.05, 0.05, 0.05), rigid::Vec3::Constant(0.02));
   open_box.triangles.pop_back();
   testing::write_obj(dir / "open.obj", open_box);
