@@ -31,16 +31,24 @@ VelocityProfileSpec read_velocity_profile(const YAML::Node& vp, LatticeKind latt
   return {vp["enabled"].as<bool>(), vp["y_origin"].as<double>(), bin > 0.0 ? bin : row_spacing(lattice, dp)};
 }
 
-// profiles: times in increasing order, x_max > x_min when there are times, spacing 0 = dp.
+// profiles: times in increasing order, spacing 0 = dp; 2-D: x_max > x_min when there are times; 3-D: from and to
+// distinct.
+template <int D>
 ProfileSpec read_profiles(const YAML::Node& pn, double dp) {
   ProfileSpec out;
   if (!pn) return out;
   for (const auto& t : pn["times"]) out.times.push_back(t.as<double>());
   if (!std::is_sorted(out.times.begin(), out.times.end()))
     throw SceneError("profiles.times", "must be in increasing order");
-  out.x_min = pn["x_min"].as<double>();
-  out.x_max = pn["x_max"].as<double>();
-  if (!out.times.empty() && !(out.x_max > out.x_min)) throw SceneError("profiles.x_max", "must exceed profiles.x_min");
+  if constexpr (D == 2) {
+    out.from = {pn["x_min"].as<double>(), 0.0};
+    out.to = {pn["x_max"].as<double>(), 0.0};
+    if (!out.times.empty() && !(out.to[0] > out.from[0])) throw SceneError("profiles.x_max", "must exceed profiles.x_min");
+  } else {
+    out.from = {pn["from"][0].as<double>(), pn["from"][1].as<double>()};
+    out.to = {pn["to"][0].as<double>(), pn["to"][1].as<double>()};
+    if (!out.times.empty() && out.from == out.to) throw SceneError("profiles.to", "must differ from profiles.from");
+  }
   out.spacing = pn["spacing"].as<double>() > 0 ? pn["spacing"].as<double>() : dp;
   return out;
 }
@@ -151,7 +159,7 @@ OutputSpec read_output(const YAML::Node& on) {
 
 }  // namespace
 
-// The keys a 3-D scene does not have (profiles, the diagnostics other than gauge_records: cases/load_scene.cpp) are
+// The keys a 3-D scene does not have (the diagnostics other than gauge_records: cases/load_scene.cpp) are
 // absent from its resolved scene, and their specs stay off.
 template <int D>
 void read_outputs(SceneBuild<D>& b) {
@@ -163,7 +171,7 @@ void read_outputs(SceneBuild<D>& b) {
     scene.surge_front = read_surge_front(diagnostics["surge_front"]);
     scene.velocity_profile = read_velocity_profile(diagnostics["velocity_profile"], b.options().lattice, b.dp);
   }
-  scene.profiles = read_profiles(r["profiles"], b.dp);
+  scene.profiles = read_profiles<D>(r["profiles"], b.dp);
   scene.output = read_output(r["output"]);
   if (diagnostics && diagnostics["slide_shapes"])
     scene.slide_shapes = read_slide_shapes(b.scene_dir, diagnostics["slide_shapes"]);

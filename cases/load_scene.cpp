@@ -32,7 +32,6 @@ void refuse_keys_not_yet_in_3d(const YAML::Node& raw) {
     throw SceneError(key, "3-D scenes (dimension: 3) have no " + key +
                               " yet: this key works in 2-D scenes only (cases/SCHEMA.md, 3-D scenes)");
   };
-  if (raw["profiles"]) refuse("profiles");
   const YAML::Node diagnostics = raw["diagnostics"];
   if (diagnostics && diagnostics.IsMap())
     for (const char* key : {"surge_front", "velocity_profile", "slide_shapes"})

@@ -1,11 +1,12 @@
 #pragma once
 // A scene: the YAML file's schema, and the simulation it builds.
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-#include <cstdint>
 
 #include <yaml-cpp/yaml.h>
 
@@ -52,9 +53,11 @@ struct SlideShapesSpec {
   std::vector<MeasuredShape> shapes;  // in increasing time; the first is the start (the front's travel origin)
 };
 
+// Free-surface profiles along the horizontal segment from `from` to `to` (2-D: x_min to x_max, y unused).
 struct ProfileSpec {
   std::vector<double> times;  // s, increasing
-  double x_min = 0.0, x_max = 0.0, spacing = 0.0;
+  std::array<double, 2> from{}, to{};  // m, (x, y)
+  double spacing = 0.0;  // m between points
 };
 
 struct OutputSpec {

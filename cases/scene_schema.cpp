@@ -288,6 +288,17 @@ Schema profiles_schema() {
       false);
 }
 
+Schema profiles_schema_3d() {
+  return S::map(
+      "free-surface profiles along a horizontal line (profiles.csv: time,x,y,eta), each taken at the first step at or "
+      "after its time, by the gauges' vertical scan",
+      {{"times", S::vector("times of the profiles", "s", -1, std::vector<double>{}, 0.0)},
+       {"from", S::vector("first point (x, y)", "m", 2, std::vector<double>{0.0, 0.0})},
+       {"to", S::vector("last point (x, y)", "m", 2, std::vector<double>{0.0, 0.0})},
+       {"spacing", S::number("distance between points (rounded to divide the line); 0 = dp", "m", 0.0, 0.0, S::inf)}},
+      false);
+}
+
 Schema slide_shapes_schema() {
   return S::map(
       "a slide's measured upper surfaces (slide_shapes.csv: the front's error in per cent of its measured travel and "
@@ -580,6 +591,7 @@ Schema make_schema_3d() {
        {"checks", checks_schema()},
        {"output", output_schema()},
        {"gauges", S::list("wave gauges", gauge_schema_3d())},
+       {"profiles", profiles_schema_3d()},
        {"diagnostics", S::map("case-specific diagnostics", {{"gauge_records", gauge_records_schema()}}, false)}});
 }
 

@@ -129,7 +129,7 @@ TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
   std::string mirror = tank_scene("square");
   mirror.replace(mirror.find("method: {initial_state: lattice}"), 32, "method: {initial_state: lattice, wall_pressure: mirror}");
   EXPECT_EQ(refusal_key(mirror), "method.wall_pressure");
-  EXPECT_EQ(refusal_key(tank_scene("square") + "profiles: {times: [0.1]}\n"), "profiles");
+  EXPECT_EQ(refusal_key(tank_scene("square") + "profiles: {times: [0.1], x_min: 0, x_max: 0.1}\n"), "profiles.x_min");
   std::string four = tank_scene("square");
   four.replace(four.find("dimension: 3"), 12, "dimension: 4");
   EXPECT_EQ(refusal_key(four), "dimension");

@@ -6,7 +6,7 @@ free-surface profiles (profiles.png); for deformable slides the front and larges
 surface at the outline times (slide.png); for a scene with measured slide shapes (diagnostics.slide_shapes) the model's
 upper surface against them at each measured time, with the front's error and the surfaces' rms distance
 (slide_shapes.png); the particles themselves at up to four snapshot times, coloured by phase and by speed
-(particles.png, from particles.h5, first run only). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs:
+(particles.png, from particles.h5, first run only); for a 3-D run the free surface seen from above (plan_view.png). Usage: tools/plot_run.py RUN_DIR [RUN_DIR ...]   (several runs:
 overlaid, e.g. resolutions, or a free and a prescribed run).
 Uses Debian's python3-matplotlib, python3-numpy and python3-h5py through /usr/bin/python3."""
 import csv
@@ -156,14 +156,22 @@ def plot_bodies(runs, target):
 
 
 def plot_profiles(runs, target):
+    """Each profile against x (2-D), or against the distance along its line from its first point (3-D: profiles.csv
+    has a y column)."""
     fig, ax = plt.subplots(figsize=(10, 4))
+    xlabel = "x (m)"
     for run in runs:
         rows = read_csv(os.path.join(run, "profiles.csv"))
         for time in sorted({r["time"] for r in rows}, key=float):
             mine = [r for r in rows if r["time"] == time]
-            ax.plot([float(r["x"]) for r in mine], [float(r["eta"]) for r in mine],
-                    label=f"t = {float(time):.3f} s: {label_of(run)}")
-    ax.set(xlabel="x (m)", ylabel="free-surface elevation (m)", title="free-surface profiles")
+            if "y" in mine[0]:
+                x0, y0 = float(mine[0]["x"]), float(mine[0]["y"])
+                along = [math.hypot(float(r["x"]) - x0, float(r["y"]) - y0) for r in mine]
+                xlabel = f"distance along the line from ({x0:g}, {y0:g}) to ({mine[-1]['x']}, {mine[-1]['y']}) (m)"
+            else:
+                along = [float(r["x"]) for r in mine]
+            ax.plot(along, [float(r["eta"]) for r in mine], label=f"t = {float(time):.3f} s: {label_of(run)}")
+    ax.set(xlabel=xlabel, ylabel="free-surface elevation (m)", title="free-surface profiles")
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(target, dpi=110)
@@ -254,6 +262,72 @@ def snapshot_indices(count, wanted=4):
     return sorted({round(k * (count - 1) / (wanted - 1)) for k in range(wanted)})
 
 
+def plot_plan_view(run, target):
+    """A 3-D run's free surface seen from above at up to four snapshot times: in each square (below), the
+    highest particle of the scene's own fluid phases (not a deformable slide's) less the median of those heights in
+    the first snapshot (the still level, where the run starts at rest); white where no water stands."""
+    try:
+        import h5py
+        import numpy as np
+    except ImportError:
+        print("plot_run: plan_view.png skipped (it needs python3-h5py)", file=sys.stderr)
+        return
+    with open(os.path.join(run, "run.json")) as f:
+        scene = json.load(f)["scene"]
+    dp, water_phases = float(scene["particle_spacing"]), len(scene["fluid"]["phases"])
+    # Squares of two fcc plane spacings (2 x 0.7937 dp) hold columns of both parities, whose tops differ by a plane;
+    # one spacing holds a column of the cubic lattice.
+    square = dp if scene.get("lattice") == "square" else 2.0 * 0.5 ** (1.0 / 3.0) * dp
+    frames = []
+    with h5py.File(os.path.join(run, "particles.h5"), "r") as f:
+        times = list(f["times"][()])
+        fluid_code = kind_code(f["snapshots/%06d/kind" % 0].attrs.get("codes", b""), "fluid")
+        for i in snapshot_indices(len(times)):
+            g = f["snapshots/%06d" % i]
+            x = g["position"][()]
+            water = g["kind"][()] == fluid_code
+            if "phase" in g:
+                water &= g["phase"][()] < water_phases
+            frames.append((times[i], x[water]))
+    lo = np.min([x[:, :2].min(axis=0) for _, x in frames if len(x)], axis=0)
+    hi = np.max([x[:, :2].max(axis=0) for _, x in frames if len(x)], axis=0)
+    cells = np.maximum(np.ceil((hi - lo) / square).astype(int), 1)
+    tops = []
+    for t, x in frames:
+        top = np.full(cells, np.nan)
+        ij = np.minimum(((x[:, :2] - lo) / square).astype(int), cells - 1)
+        np.fmax.at(top, (ij[:, 0], ij[:, 1]), x[:, 2])
+        tops.append((t, top))
+    reference = float(np.nanmedian(tops[0][1]))
+    reach = max(float(np.nanmax(np.abs(top - reference))) for _, top in tops) or 1e-6
+    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-12)
+    width = 4.2
+    fig, axes = plt.subplots(1, len(tops), figsize=(width * len(tops) + 1.2, width * aspect + 1.0), squeeze=False,
+                             layout="constrained")
+    for ax, (t, top) in zip(axes[0], tops):
+        image = ax.imshow((top - reference).T, origin="lower", extent=(lo[0], hi[0], lo[1], hi[1]), cmap="RdBu_r",
+                          vmin=-reach, vmax=reach, interpolation="nearest")
+        ax.set_title(f"t = {t:.3g} s", fontsize=9)
+        ax.set(xlabel="x (m)", ylabel="y (m)")
+        ax.tick_params(labelsize=7)
+    fig.colorbar(image, ax=list(axes[0]), label=f"highest water particle - {reference:.4g} m (m)", shrink=0.8)
+    fig.suptitle(f"{label_of(run)}: free surface from above (squares of {square:.3g} m; reference: its median at t = "
+                 f"{tops[0][0]:.3g} s)", fontsize=10)
+    fig.savefig(target, dpi=110)
+    plt.close(fig)
+    print("wrote", target)
+
+
+def kind_code(codes, name):
+    """The code of a particle kind in a snapshot's kind attribute ("0 fluid, 1 wall, 2 dummy": tools/snapshot_writer.hpp)."""
+    codes = codes.decode() if isinstance(codes, bytes) else str(codes)
+    for item in codes.split(","):
+        words = item.split()
+        if len(words) == 2 and words[1] == name:
+            return int(words[0])
+    return 0
+
+
 def plot_particles(run, target):
     """The particles at up to four times: top row by phase (boundary particles grey), bottom row by speed. A 3-D run is
     drawn as a side view (x, z) of the slab one spacing thick across the middle of its y extent."""
@@ -296,12 +370,7 @@ def plot_particles(run, target):
             m = np.abs(x[:, 1] - y_mid) <= half
             slabs.append((t, x[m][:, [0, 2]], v[m], phase[m], kind[m]))
         frames = slabs
-    kind_codes = kind_codes.decode() if isinstance(kind_codes, bytes) else str(kind_codes)
-    fluid_code = 0
-    for item in kind_codes.split(","):  # "0 fluid, 1 wall, 2 dummy" (tools/snapshot_writer.hpp)
-        words = item.split()
-        if len(words) == 2 and words[1] == "fluid":
-            fluid_code = int(words[0])
+    fluid_code = kind_code(kind_codes, "fluid")
     all_xy = np.concatenate([x[:, :2] for _, x, _, _, _ in frames])
     lo, hi = all_xy.min(axis=0), all_xy.max(axis=0)
     aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-12)
@@ -356,6 +425,8 @@ def main():
         plot_shapes(runs, os.path.join(out, "slide_shapes.png"))
     if os.path.exists(os.path.join(out, "particles.h5")):
         plot_particles(out, os.path.join(out, "particles.png"))
+        if json.load(open(os.path.join(out, "run.json")))["scene"].get("dimension") == 3:
+            plot_plan_view(out, os.path.join(out, "plan_view.png"))
 
 
 if __name__ == "__main__":

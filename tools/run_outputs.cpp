@@ -143,7 +143,8 @@ RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const std::filesystem::p
     velocity_profile_.emplace(out / "velocity_profile.csv",
                               std::vector<std::string>{"time", "y", "u", "v", "particles"});
   if (!scene.profiles.times.empty())
-    profiles_.emplace(out / "profiles.csv", std::vector<std::string>{"time", "x", "eta"});
+    profiles_.emplace(out / "profiles.csv", D == 2 ? std::vector<std::string>{"time", "x", "eta"}
+                                                   : std::vector<std::string>{"time", "x", "y", "eta"});
   if (!scene.slides.empty()) {
     std::vector<std::string> cols{"time", "slide", "front_x", "front_y"};
     if (D == 3) cols.push_back("front_z");
@@ -219,19 +220,23 @@ void RunOutputs<D>::sample_bodies() {
     bodies_->add_labelled_row(sim_.time(), bodies->names[b], body_row<D>(*bodies, int(b), mean[b]));
 }
 
-// Each profile is taken at the first step at or after its time.
+// Each profile is taken at the first step at or after its time, at points evenly spaced from `from` to `to` (both
+// included, the spacing rounded to divide the segment).
 template <int D>
 void RunOutputs<D>::sample_profiles() {
-  if constexpr (D == 2) {  // 2-D scenes only so far
-    const auto& ps = scene_.profiles;
-    while (profiles_ && next_profile_ < ps.times.size() && sim_.time() >= ps.times[next_profile_] - 1e-12) {
-      const long n = std::lround((ps.x_max - ps.x_min) / ps.spacing);
-      for (long k = 0; k <= n; ++k) {
-        const double x = ps.x_min + (ps.x_max - ps.x_min) * k / std::max(1L, n);
+  const auto& ps = scene_.profiles;
+  while (profiles_ && next_profile_ < ps.times.size() && sim_.time() >= ps.times[next_profile_] - 1e-12) {
+    const double length = std::hypot(ps.to[0] - ps.from[0], ps.to[1] - ps.from[1]);
+    const long n = std::max(1L, std::lround(length / ps.spacing));
+    for (long k = 0; k <= n; ++k) {
+      const double x = ps.from[0] + (ps.to[0] - ps.from[0]) * k / n, y = ps.from[1] + (ps.to[1] - ps.from[1]) * k / n;
+      if constexpr (D == 2) {
         profiles_->add_row({sim_.time(), x, free_surface_elevation<2>(sim_, Vec<2>(x, 0.0))});
+      } else {
+        profiles_->add_row({sim_.time(), x, y, free_surface_elevation<3>(sim_, Vec<3>(x, y, 0.0))});
       }
-      ++next_profile_;
     }
+    ++next_profile_;
   }
 }
 
