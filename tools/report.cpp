@@ -126,6 +126,7 @@ std::string run_body(const fs::path& dir) {
   run_plot_script("plot_run.py", dir);
   for (const auto& [png, caption] : std::vector<std::pair<const char*, const char*>>{
            {"particles.png", "the particles at four times, coloured by phase and by speed"},
+           {"plan_view.png", "3-D: the free surface seen from above (the highest water particle in each square)"},
            {"gauges.png", "free-surface elevation at the wave gauges (against the measured records, where the scene "
                           "names them: diagnostics.gauge_records)"},
            {"surge_front.png", "dam-break surge front and water height at the wall against Martin & Moyce (1952)"},
