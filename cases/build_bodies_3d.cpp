@@ -5,12 +5,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
 
 #include "cases/body_choices.hpp"
 #include "cases/body_model.hpp"
+#include "cases/csv_table.hpp"
 #include "cases/scene_build.hpp"
 #include "cases/solid_shape.hpp"
 #include "coupling/position_text.hpp"
@@ -67,17 +69,34 @@ void check_inside_tanks(const SceneBuild<3>& b, const rigid::TriangleSurface& su
   }
 }
 
+// The angle of the rotation q, in [0, pi] (q and -q are one rotation).
+double turn_angle(const rigid::Quat& q) {
+  const double a = Eigen::AngleAxisd(q).angle();
+  return std::min(a, 2.0 * M_PI - a);
+}
+
 // A body cut by a symmetry plane moves as its mirror image does: along the plane, without turning (rotations are
 // locked all three or none). The scene says so: locked holds the plane's normal translation and rx, ry, rz; a
 // prescribed body's direction lies in the plane.
 void check_symmetry_locks(const SceneBuild<3>& b, const YAML::Node& bn, const SolidShape& shape,
-                          const rigid::SolidSpec& spec, const std::string& path) {
+                          const rigid::SolidSpec& spec, const BodyMotion& motion, const std::string& path) {
   if (!shape.cut()) return;
   for (const auto& plane : symmetry_planes(b.r)) {
     const bool on_it = std::any_of(shape.surface.vertices.begin(), shape.surface.vertices.end(), [&](const auto& v) {
       return std::abs(plane.normal.dot(Vec<3>(v)) - plane.offset) <= 1e-9 * b.dp;
     });
     if (!on_it) continue;
+    if (motion.prescribed_3d && !motion.prescribed_3d->samples().empty()) {
+      const auto& first = motion.prescribed_3d->samples().front();
+      for (const auto& m : motion.prescribed_3d->samples())
+        if (std::abs(plane.normal.dot(Vec<3>(m.position - first.position))) > 1e-9 * b.dp ||
+            turn_angle(m.orientation) > 1e-9)
+          throw SceneError(path + ".prescribed.file",
+                           fmt::format("the symmetry plane {} cuts this body, which must then move along it without "
+                                       "turning; at t = {:.6g} s the series leaves it or turns",
+                                       plane.key, m.time));
+      continue;
+    }
     if (spec.kinematic) {
       const std::string moved_by = bn["rail"] ? "rail" : "prescribed";
       // The force across the rail would count the half body's push against the plane, which its mirror half cancels.
@@ -112,9 +131,76 @@ rigid::Rail read_rail(const YAML::Node& bn, const std::string& path) {
   return rail;
 }
 
+// A 3-D prescribed series (bodies[k].prescribed.file): a CSV whose header names at least time, x, y, z, qw, qx, qy, qz
+// (the centre of mass and the orientation as the scene states it, as bodies.csv has them; vx, vy, vz and body
+// optional). Its orientations are made Bullet's, counted from the body's creation at `placed`: q placed^-1.
+rigid::SpatialPrescribedMotion read_pose_series(const std::filesystem::path& file, const std::string& body,
+                                                const std::string& key, const rigid::Quat& placed) {
+  CsvTable t;
+  try {
+    t = read_csv(file);
+  } catch (const std::runtime_error&) {
+    throw SceneError(key, "cannot read " + file.string());
+  }
+  std::array<int, 8> pose{};
+  const std::array<const char*, 8> pose_names{"time", "x", "y", "z", "qw", "qx", "qy", "qz"};
+  for (std::size_t c = 0; c < pose.size(); ++c)
+    if ((pose[c] = t.find_column(pose_names[c])) < 0)
+      throw SceneError(key, file.string() + ": the header must name the columns time, x, y, z, qw, qx, qy and qz");
+  const int cvx = t.find_column("vx"), cvy = t.find_column("vy"), cvz = t.find_column("vz"),
+            cb = t.find_column("body");
+  const bool has_velocity = cvx >= 0 && cvy >= 0 && cvz >= 0;
+  std::vector<rigid::SpatialSample> samples;
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    const auto& f = t.rows[k];
+    if (cb >= 0 && (cb >= int(f.size()) || f[cb] != body)) continue;
+    rigid::SpatialSample m;
+    try {
+      const auto cell = [&](int c) { return std::stod(f.at(static_cast<std::size_t>(c))); };
+      m.time = cell(pose[0]);
+      m.position = rigid::Vec3(cell(pose[1]), cell(pose[2]), cell(pose[3]));
+      m.orientation = rigid::Quat(cell(pose[4]), cell(pose[5]), cell(pose[6]), cell(pose[7]));
+      if (has_velocity) m.velocity = rigid::Vec3(cell(cvx), cell(cvy), cell(cvz));
+    } catch (const std::exception&) {
+      throw SceneError(key, fmt::format("{}: row {} is not numeric", file.string(), t.line_numbers[k]));
+    }
+    const double norm = m.orientation.norm();
+    if (!(std::abs(norm - 1.0) <= 1e-3))
+      throw SceneError(key, fmt::format("{}: row {}: the quaternion (qw, qx, qy, qz) has length {:.6g}, not 1",
+                                        file.string(), t.line_numbers[k], norm));
+    m.orientation = rigid::Quat(m.orientation.normalized() * placed.conjugate());
+    // Repeated times (a run's last row written twice) keep the first.
+    if (!samples.empty() && m.time <= samples.back().time) continue;
+    samples.push_back(m);
+  }
+  if (samples.size() < 2)
+    throw SceneError(key, fmt::format("{}: fewer than two rows for body \"{}\"", file.string(), body));
+  return rigid::SpatialPrescribedMotion::from_samples(std::move(samples), has_velocity);
+}
+
+// A series must cover the run and start where the body is put: its centre of mass within 0.01 dp, its orientation
+// within 1e-6 rad.
+void check_series_start(const SceneBuild<3>& b, const rigid::SpatialPrescribedMotion& m, const Vec<3>& start,
+                        const rigid::Quat& placed, const std::string& key) {
+  const double end_time = b.r["end_time"].as<double>();
+  if (m.first_time() > 1e-9 || m.last_time() < end_time - 1e-9)
+    throw SceneError(key, fmt::format("the series covers [{:.6g}, {:.6g}] s, which must include [0, end_time = {:.6g}] s",
+                                      m.first_time(), m.last_time(), end_time));
+  const rigid::SpatialState s0 = m.at(0.0);
+  if ((Vec<3>(s0.position) - start).norm() > 0.01 * b.dp || turn_angle(s0.orientation) > 1e-6) {
+    const rigid::Quat q(s0.orientation * placed);
+    throw SceneError(key, fmt::format("the series starts at {}, orientation (qw, qx, qy, qz) = ({:.6g}, {:.6g}, {:.6g}, "
+                                      "{:.6g}), but the body's centre of mass is at {}, orientation ({:.6g}, {:.6g}, "
+                                      "{:.6g}, {:.6g})",
+                                      position_text<3>(Vec<3>(s0.position)), q.w(), q.x(), q.y(), q.z(),
+                                      position_text<3>(start), placed.w(), placed.x(), placed.y(), placed.z()));
+  }
+}
+
 // Free, prescribed or on a rail (bodies[k].motion); a prescribed body follows the ln cosh law from its centre of mass
-// `start`.
-BodyMotion read_motion(const YAML::Node& bn, const std::string& path, const Vec<3>& start) {
+// `start`, or a series of poses that starts there, at the orientation `placed`.
+BodyMotion read_motion(const SceneBuild<3>& b, const YAML::Node& bn, const std::string& path, const Vec<3>& start,
+                       const rigid::Quat& placed) {
   BodyMotion motion;
   motion.mode = BodyMotion::mode_names.parse(bn["motion"].as<std::string>());
   if (motion.mode != BodyMotion::Mode::prescribed && bn["prescribed"])
@@ -132,6 +218,14 @@ BodyMotion read_motion(const YAML::Node& bn, const std::string& path, const Vec<
     throw SceneError(path + ".release_time",
                      "applies to free and rail motion only (a prescribed body starts at start_time)");
   const YAML::Node pr = bn["prescribed"];
+  if (prescribed_law_names.parse(pr["type"].as<std::string>()) == PrescribedLaw::series) {
+    const std::string who = pr["body"].as<std::string>().empty() ? bn["name"].as<std::string>()
+                                                                   : pr["body"].as<std::string>();
+    const std::string key = path + ".prescribed.file";
+    motion.prescribed_3d = read_pose_series(b.scene_dir / pr["file"].as<std::string>(), who, key, placed);
+    check_series_start(b, *motion.prescribed_3d, start, placed, key);
+    return motion;
+  }
   const Vec<3> direction = vec_of<3>(pr["direction"]);
   if (!(direction.norm() > 0.0)) throw SceneError(path + ".prescribed.direction", "must not be zero");
   motion.prescribed_3d = rigid::SpatialPrescribedMotion::ln_cosh(
@@ -249,9 +343,10 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     const rigid::TriangleSurface& surface = shape.surface;
     check_inside_tanks(b, surface, path);
     rigid::SolidSpec spec = solid_spec(bn, shape, path);
-    BodyMotion motion = read_motion(bn, path, spec.centre_of_mass);
+    const rigid::Quat placed(Eigen::Quaterniond(Eigen::Matrix3d(shape.axes)));
+    BodyMotion motion = read_motion(b, bn, path, spec.centre_of_mass, placed);
     spec.kinematic = motion.mode != BodyMotion::Mode::free;  // a rail body's one freedom is integrated outside Bullet
-    check_symmetry_locks(b, bn, shape, spec, path);
+    check_symmetry_locks(b, bn, shape, spec, motion, path);
     rigid::SolidSpec collision = spec;
     collision.hull = shape.inset(b.r["rigid"]["collision_margin"].as<double>() * b.dp);
     collision.hull_inset = true;
@@ -266,12 +361,10 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     if (motion.free_while_settling && b.initial_state != InitialState::settled)
       throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
                                                   "otherwise)");
-    const rigid::Mat3& axes = shape.axes;
     const double volume = rigid::mass_properties(surface).volume, density = spec.mass / volume;
     int body = 0;
     try {
-      body = b.bodies->add(name, collision, motion, density,
-                           rigid::Quat(Eigen::Quaterniond(Eigen::Matrix3d(axes))));
+      body = b.bodies->add(name, collision, motion, density, placed);
     } catch (const std::invalid_argument& e) {
       throw SceneError(path + ".shape", e.what());
     }

@@ -505,7 +505,7 @@ Schema body_schema_3d() {
       "its faces) exchange forces with the fluid; any other model fills the same shape with sediment particles of "
       "that rheology (a deformable slide: a phase named after the body, of its density), so that one key switches a "
       "slide between rigid and deformable. 3-D so far: boxes, spheres, cylinders, convex prisms and convex meshes, "
-      "free, on a rail or moved by the ln cosh law (time series are 2-D only yet); a tank's symmetry sides cut it "
+      "free, on a rail, moved by the ln cosh law or by a series of poses; a tank's symmetry sides cut it "
       "(walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},
        {"model",
@@ -540,16 +540,25 @@ Schema body_schema_3d() {
                                        "", 0.0, 0.0, 10.0)}},
                false)},
        {"prescribed",
-        S::map("prescribed motion (motion: prescribed); 3-D so far: the ln cosh law, the body not turning",
-               {{"type", S::choice("ln_cosh: s(t) = s0 ln cosh((t - start_time) / t0) along `direction` (rigid/"
-                                   "ln_cosh_law.hpp; a 3-D time series is not read yet)",
-                                   {std::string(to_string(PrescribedLaw::ln_cosh))},
-                                   std::string(to_string(PrescribedLaw::ln_cosh)))},
-                {"direction", S::vector("direction of travel (made unit)", "", 3, std::nullopt)},
-                {"s0", S::number("length scale s0 = u_t^2 / a0", "m", std::nullopt, 0.0, S::inf, true, false)},
-                {"t0", S::number("time scale t0 = u_t / a0", "s", std::nullopt, 0.0, S::inf, true, false)},
-                {"start_time", S::number("time the motion starts", "s", 0.0, 0.0, S::inf)}},
-               false)},
+        S::variant(
+            "prescribed motion (motion: prescribed)", "type",
+            {{"ln_cosh", S::map("s(t) = s0 ln cosh((t - start_time) / t0) along `direction` (rigid/ln_cosh_law.hpp), "
+                                "the body not turning",
+                                {{"direction", S::vector("direction of travel (made unit)", "", 3, std::nullopt)},
+                                 {"s0", S::number("length scale s0 = u_t^2 / a0", "m", std::nullopt, 0.0, S::inf, true,
+                                                  false)},
+                                 {"t0", S::number("time scale t0 = u_t / a0", "s", std::nullopt, 0.0, S::inf, true,
+                                                  false)},
+                                 {"start_time", S::number("time the motion starts", "s", 0.0, 0.0, S::inf)}})},
+             {"series",
+              S::map("a CSV time series of poses (time,x,y,z,qw,qx,qy,qz[,vx,vy,vz] of the centre of mass and the "
+                     "orientation as the scene states it, as in bodies.csv, whose rows it replays): the centre of "
+                     "mass by cubic Hermite (slopes vx, vy, vz where given, else centred differences), the orientation "
+                     "by spherical linear interpolation between rows (rigid/spatial_prescribed_motion.hpp); it must "
+                     "cover [0, end_time] and start where the body is put",
+                     {{"file", S::text("CSV file, relative to the scene file", std::nullopt)},
+                      {"body", S::text("rows whose body column equals this (default: this body's name)", "")}})}},
+            std::string(to_string(PrescribedLaw::ln_cosh)))},
        {"release_time",
         S::number("the body is held in place until this time while the water settles", "s", 0.0, 0.0, S::inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "

@@ -7,6 +7,7 @@
 #include "rigid/polygon.hpp"
 #include "rigid/prescribed_motion.hpp"
 #include "rigid/rigid_world.hpp"
+#include "rigid/spatial_prescribed_motion.hpp"
 
 namespace slide::rigid {
 namespace {
@@ -187,6 +188,40 @@ TEST(Rigid, PrescribedSeriesReproducesSamplesAndDifferentiates) {
     EXPECT_NEAR(m.at(t).position[0], t * t, 1e-12);
   }
   EXPECT_THROW(m.at(1.5), std::out_of_range);
+}
+
+// A 3-D series of poses: between two orientations q_a and q_b = q_a Rz(60 deg) (q_a a quarter turn about x), 2 s
+// apart, the orientation turns uniformly about q_a's z axis, the world's -y: half way it is q_a Rz(30 deg), the angular
+// velocity (pi/3)/2 rad/s about -y throughout, the orientation's derivative; q_b given as -q_b (the same rotation)
+// turns the same short way. Positions are cubic Hermite with the given velocities: a quadratic exactly.
+TEST(Rigid, SpatialSeriesTurnsTheShortWayAtTheRateOfItsSamples) {
+  const Quat qa(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+  const Quat qb(qa * Quat(Eigen::AngleAxisd(M_PI / 3, Eigen::Vector3d::UnitZ())));
+  const auto sample = [](double t, const Quat& q) {
+    SpatialSample s;
+    s.time = t;
+    s.position = Vec3(t * t, 1.0 - t, 0.5 * t * t);
+    s.velocity = Vec3(2 * t, -1.0, t);
+    s.orientation = q;
+    return s;
+  };
+  for (const double sign : {1.0, -1.0}) {
+    Quat b = qb;
+    b.coeffs() *= sign;
+    const auto m = SpatialPrescribedMotion::from_samples({sample(1.0, qa), sample(3.0, b)}, true);
+    const SpatialState mid = m.at(2.0);
+    const Quat expected(qa * Quat(Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ())));
+    EXPECT_NEAR(mid.orientation.angularDistance(expected), 0.0, 1e-14) << sign;
+    EXPECT_NEAR((mid.angular_velocity - Vec3(0.0, -M_PI / 6, 0.0)).norm(), 0.0, 1e-14) << sign;
+    EXPECT_NEAR((mid.position - Vec3(4.0, -1.0, 2.0)).norm(), 0.0, 1e-14);
+    EXPECT_NEAR((mid.velocity - Vec3(4.0, -1.0, 2.0)).norm(), 0.0, 1e-14);
+    EXPECT_NEAR(m.at(3.0).orientation.angularDistance(qb), 0.0, 1e-14);
+    // The angular velocity is the orientation's derivative: q(t + h) q(t)^-1 = exp(h w / 2).
+    const double h = 1e-6;
+    const Eigen::AngleAxisd step(Quat(m.at(1.7 + h).orientation * m.at(1.7).orientation.conjugate()));
+    EXPECT_NEAR((step.axis() * step.angle() / h - m.at(1.7).angular_velocity).norm(), 0.0, 1e-8);
+  }
+  EXPECT_THROW(SpatialPrescribedMotion::from_samples({sample(1.0, qa)}, true), std::invalid_argument);
 }
 
 }  // namespace
