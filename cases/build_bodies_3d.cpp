@@ -37,7 +37,7 @@ rigid::SolidSpec solid_spec(const YAML::Node& bn, const SolidShape& shape, const
   if ((density_key > 0) == (mass_key > 0))
     throw SceneError(path + ".density", "give exactly one of density and mass, both positive");
   rigid::SolidSpec spec;
-  spec.hull = surface;
+  spec.hulls = {surface};
   spec.centre_of_mass = m.centroid;
   spec.mass = mass_key > 0 ? mass_key * (m.volume / shape.whole_volume) : density_key * m.volume;
   spec.inertia = (spec.mass / m.volume) * m.inertia;
@@ -348,7 +348,7 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
     spec.kinematic = motion.mode != BodyMotion::Mode::free;  // a rail body's one freedom is integrated outside Bullet
     check_symmetry_locks(b, bn, shape, spec, motion, path);
     rigid::SolidSpec collision = spec;
-    collision.hull = shape.inset(b.r["rigid"]["collision_margin"].as<double>() * b.dp);
+    collision.hulls = shape.inset(b.r["rigid"]["collision_margin"].as<double>() * b.dp);
     collision.hull_inset = true;
     motion.release_time = bn["release_time"].as<double>();
     motion.free_while_settling =

@@ -408,9 +408,11 @@ Schema shape_schema_3d(const std::string& description) {
                                                   "R = Rz(yaw) Ry(pitch) Rx(roll), as bodies.csv)",
                                                   "deg", 3, std::vector<double>{0.0, 0.0, 0.0})}})},
                     {"mesh",
-                     S::map("a closed triangle mesh from a file (a body's convex so far; a water region's any), checked before anything runs: closed, "
-                            "its faces consistently and outward oriented, a positive volume, no face cutting another "
-                            "(mesh/closed_mesh.hpp); a point x of the file goes to position + R (scale x)",
+                     S::map("a closed triangle mesh from a file, checked before anything runs: closed, its faces "
+                            "consistently and outward oriented, a positive volume, no face cutting another "
+                            "(mesh/closed_mesh.hpp); a point x of the file goes to position + R (scale x). It may be "
+                            "concave: a body then collides with walls as its convex pieces (HACD, "
+                            "mesh/convex_decomposition.hpp), and no plane of symmetry may cut it yet",
                             {{"file", S::text("an .stl (binary or ASCII) or .obj file, relative to the scene's folder",
                                               std::nullopt)},
                              {"scale", S::number("factor on the file's coordinates (e.g. 0.001 for millimetres)", "",
@@ -504,7 +506,7 @@ Schema body_schema_3d() {
       "surface) whose boundary particles (a wall layer on its surface and dummies inside, at the scene's spacing along "
       "its faces) exchange forces with the fluid; any other model fills the same shape with sediment particles of "
       "that rheology (a deformable slide: a phase named after the body, of its density), so that one key switches a "
-      "slide between rigid and deformable. 3-D so far: boxes, spheres, cylinders, convex prisms and convex meshes, "
+      "slide between rigid and deformable. 3-D so far: boxes, spheres, cylinders, convex prisms and closed meshes, "
       "free, on a rail, moved by the ln cosh law or by a series of poses; a tank's symmetry sides cut it "
       "(walls[].symmetry)",
       {{"name", S::text("name used in bodies.csv and messages", std::nullopt)},

@@ -12,6 +12,7 @@
 #include "cases/schema.hpp"
 #include "cases/surface_layers.hpp"
 #include "mesh/closed_mesh.hpp"
+#include "mesh/convex_decomposition.hpp"
 #include "mesh/convex_inset.hpp"
 #include "mesh/mesh_distance.hpp"
 #include "rigid/polygon.hpp"
@@ -132,7 +133,7 @@ double box_signed_distance(const Vec<3>& p, const Vec<3>& centre, const Vec<3>& 
 // The surface in bodies[k].shape.file, placed: a file point x goes to position + R (scale x). Throws SceneError naming
 // the key, the file and its defect.
 rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& path, const std::filesystem::path& scene_dir,
-                                   const rigid::Mat3& axes, bool must_be_convex) {
+                                   const rigid::Mat3& axes) {
   const std::filesystem::path file = scene_dir / shape["file"].as<std::string>();
   rigid::TriangleSurface m;
   try {
@@ -143,14 +144,6 @@ rigid::TriangleSurface placed_mesh(const YAML::Node& shape, const std::string& p
   const double scale = shape["scale"].as<double>();
   const Vec<3> position = vec_of<3>(shape["position"]);
   for (auto& v : m.vertices) v = position + axes * (scale * v);
-  double size = 0.0;
-  for (const auto& v : m.vertices) size = std::max(size, (v - m.vertices[0]).norm());
-  // Bullet takes a moving body's convex hull, the symmetry cut and the collision inset are written for convex shapes.
-  // The tolerance allows an STL's float coordinates (6e-8 of its size) on coplanar faces.
-  if (must_be_convex && !rigid::is_convex(m, 1e-6 * size))
-    throw SceneError(path + ".shape.file", fmt::format("{}: it is not convex, and a body's mesh must be so far (a concave "
-                                                       "moving body needs a convex decomposition, not yet built)",
-                                                       file.string()));
   return m;
 }
 
@@ -192,16 +185,53 @@ MirrorPlane SymmetryPlane::mirror() const {
 
 namespace {
 
+// Whether a closed surface is convex; the tolerance allows an STL's float coordinates (6e-8 of its size) on coplanar
+// faces.
+bool convex(const rigid::TriangleSurface& m) {
+  double size = 0.0;
+  for (const auto& v : m.vertices) size = std::max(size, (v - m.vertices[0]).norm());
+  return rigid::is_convex(m, 1e-6 * size);
+}
+
+// The convex pieces of a concave body's surface, each moved in by the margin: Bullet collides a concave moving body as
+// their compound. HACD is allowed the margin as concavity; a piece that stands out of the surface by more than half a
+// spacing would make contacts where the body is not, and is refused.
+std::vector<rigid::TriangleSurface> concave_inset(const rigid::TriangleSurface& whole, const std::string& path,
+                                                  double dp, double margin) {
+  mesh::ConvexPieces d;
+  try {
+    d = mesh::convex_decomposition(whole, margin);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(path + ".shape.file", e.what());
+  }
+  if (d.overreach > 0.5 * dp)
+    throw SceneError(path + ".shape.file",
+                     fmt::format("its convex decomposition ({} pieces) stands {:.3g} m out of its surface, more than "
+                                 "half a spacing", d.pieces.size(), d.overreach));
+  std::vector<rigid::TriangleSurface> out;
+  for (const auto& piece : d.pieces) {
+    try {
+      out.push_back(mesh::convex_inset(piece, margin));
+    } catch (const std::invalid_argument&) {
+      // A piece thinner than twice the margin: left out, its neighbours hold the surface there.
+    }
+  }
+  if (out.empty()) throw SceneError(path + ".shape", "too thin for the collision margin");
+  return out;
+}
+
 // A shape known by its triangles alone (a mesh, a prism): the signed distance from CGAL's tree on them, the boundary
-// points sampled evenly on them in layers, Bullet's hull by the convex inset.
+// points sampled evenly on them in layers, Bullet's hull by the convex inset (a concave mesh's: its pieces').
 void from_its_surface(SolidShape& s, const std::string& path, double dp, int layers) {
   const auto distance = std::make_shared<const mesh::MeshDistance>(s.surface);
   s.signed_distance = [distance](const Vec<3>& p) { return distance->signed_distance(p); };
   const auto inside = [distance](const Vec<3>& p) { return distance->signed_distance(p) < 0.0; };
   s.points = surface_layers(s.surface, *distance, inside, dp, layers);
-  s.inset = [whole = s.surface, path](double margin) {
+  s.convex = convex(s.surface);
+  s.inset = [whole = s.surface, path, dp, convex = s.convex](double margin) {
+    if (!convex) return concave_inset(whole, path, dp, margin);
     try {
-      return mesh::convex_inset(whole, margin);
+      return std::vector<rigid::TriangleSurface>{mesh::convex_inset(whole, margin)};
     } catch (const std::invalid_argument&) {
       throw SceneError(path + ".shape", "too thin for the collision margin");
     }
@@ -223,13 +253,13 @@ rigid::TriangleSurface prism_of(const YAML::Node& shape, const std::string& path
 
 // The whole shape, before any symmetry cut; a mesh must be convex where `body` (Bullet takes its hull).
 SolidShape whole_shape(const YAML::Node& shape, const std::string& path, double dp, int layers,
-                       const std::filesystem::path& scene_dir, bool body) {
+                       const std::filesystem::path& scene_dir) {
   SolidShape s;
   const std::string type = shape["type"].as<std::string>();
   const Vec<3> centre = type == "mesh" ? Vec<3>::Zero() : vec_of<3>(shape["center"]);
   if (type == "mesh") {
     s.axes = axes_of(shape);
-    s.surface = placed_mesh(shape, path, scene_dir, s.axes, body);
+    s.surface = placed_mesh(shape, path, scene_dir, s.axes);
     from_its_surface(s, path, dp, layers);
   } else if (type == "prism") {
     s.axes = axes_of(shape);
@@ -243,7 +273,7 @@ SolidShape whole_shape(const YAML::Node& shape, const std::string& path, double 
     s.points = sphere_points(centre, radius, dp, layers);
     s.inset = [centre, radius, path](double margin) {
       if (!(radius > 1.5 * margin)) throw SceneError(path + ".shape.radius", "too small for the collision margin");
-      return rigid::sphere_surface(centre, radius - margin);
+      return std::vector{rigid::sphere_surface(centre, radius - margin)};
     };
   } else if (type == "cylinder") {
     const double radius = shape["radius"].as<double>(), height = shape["height"].as<double>();
@@ -258,7 +288,7 @@ SolidShape whole_shape(const YAML::Node& shape, const std::string& path, double 
     s.inset = [centre, radius, height, axes = s.axes, path](double margin) {
       if (!(radius > 1.5 * margin)) throw SceneError(path + ".shape.radius", "too small for the collision margin");
       if (!(height > 3.0 * margin)) throw SceneError(path + ".shape.height", "too small for the collision margin");
-      return rigid::cylinder_surface(centre, radius - margin, height - 2.0 * margin, axes);
+      return std::vector{rigid::cylinder_surface(centre, radius - margin, height - 2.0 * margin, axes)};
     };
   } else {
     const Vec<3> size = vec_of<3>(shape["size"]);
@@ -271,7 +301,7 @@ SolidShape whole_shape(const YAML::Node& shape, const std::string& path, double 
     s.points = box_points(size, s.axes, centre, dp, layers);
     s.inset = [centre, size, axes = s.axes, path](double margin) {
       if (!(size.minCoeff() > 3.0 * margin)) throw SceneError(path + ".shape.size", "too small for the collision margin");
-      return rigid::box_surface(centre, size - Vec<3>::Constant(2.0 * margin), axes);
+      return std::vector{rigid::box_surface(centre, size - Vec<3>::Constant(2.0 * margin), axes)};
     };
   }
   s.whole_volume = rigid::mass_properties(s.surface).volume;
@@ -284,13 +314,18 @@ bool SolidShape::cut() const { return rigid::mass_properties(surface).volume < w
 
 SolidShape region_solid_shape(const YAML::Node& shape, const std::string& path, double dp,
                               const std::filesystem::path& scene_dir) {
-  return whole_shape(shape, path, dp, 0, scene_dir, false);
+  return whole_shape(shape, path, dp, 0, scene_dir);
 }
 
 SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const std::vector<SymmetryPlane>& planes,
                        double dp, int layers, const std::filesystem::path& scene_dir) {
-  SolidShape s = whole_shape(shape, path, dp, layers, scene_dir, true);
+  SolidShape s = whole_shape(shape, path, dp, layers, scene_dir);
   for (const auto& plane : planes) {
+    if (!s.convex)  // the cut below is written for convex surfaces
+      for (const auto& v : s.surface.vertices)
+        if (!plane.keeps(Vec<3>(v)) && !plane.holds(Vec<3>(v), 1e-9 * dp))
+          throw SceneError(path + ".shape", fmt::format("the symmetry plane {} cuts this concave body, which is not "
+                                                        "supported yet (a convex body may be cut)", plane.key));
     try {
       s.surface = rigid::clip_convex(s.surface, plane.normal, plane.offset);
     } catch (const std::invalid_argument&) {
@@ -302,17 +337,18 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     for (auto& p : s.points)
       if (plane.holds(p.position, on)) p.position += (plane.offset - plane.normal.dot(p.position)) * plane.normal;
   }
+  if (!s.convex) return s;  // not cut (above)
   s.inset = [whole = s.inset, planes, path](double margin) {
-    rigid::TriangleSurface hull = whole(margin);
+    std::vector<rigid::TriangleSurface> hulls = whole(margin);
     for (const auto& plane : planes) {
       try {
-        hull = rigid::clip_convex(hull, plane.normal, plane.offset - margin);
+        hulls[0] = rigid::clip_convex(hulls[0], plane.normal, plane.offset - margin);
       } catch (const std::invalid_argument&) {
         throw SceneError(path + ".shape", fmt::format("too thin beside the symmetry plane {} for the collision margin",
                                                       plane.key));
       }
     }
-    return hull;
+    return hulls;
   };
   return s;
 }

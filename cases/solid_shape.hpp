@@ -41,9 +41,11 @@ struct SolidShape {
   rigid::Mat3 axes = rigid::Mat3::Identity();  // the body frame's axes at placement
   std::function<double(const Vec<3>&)> signed_distance;  // m from the whole shape's surface, < 0 inside
   std::vector<BoundaryPointOf<3>> points;  // wall layer and dummies within the kept side (empty when layers is 0)
-  // The same shape, cut the same way, moved in by `margin` (m) all round: the hull Bullet collides with, adding its
-  // margin back (rigid::SolidSpec::hull_inset). Throws SceneError where nothing is left.
-  std::function<rigid::TriangleSurface(double margin)> inset;
+  bool convex = true;                      // false: a concave mesh (Bullet collides it as its convex pieces)
+  // The same shape, cut the same way, moved in by `margin` (m) all round: the hulls Bullet collides with, adding its
+  // margin back (rigid::SolidSpec::hull_inset); one for a convex shape, a concave mesh's convex pieces
+  // (mesh/convex_decomposition.hpp). Throws SceneError where nothing is left.
+  std::function<std::vector<rigid::TriangleSurface>(double margin)> inset;
   bool cut() const;                        // whether a symmetry plane cuts it
 };
 

@@ -51,7 +51,11 @@ struct RigidWorld::Impl {
   Vec3 gravity;
 
   struct Body {
-    std::unique_ptr<btConvexHullShape> shape;
+    std::vector<std::unique_ptr<btConvexHullShape>> hulls;  // one (a convex body) or a concave body's pieces
+    std::unique_ptr<btCompoundShape> compound;               // the pieces together, where there are several
+    btCollisionShape* shape() const {
+      return compound ? static_cast<btCollisionShape*>(compound.get()) : hulls[0].get();
+    }
     std::unique_ptr<btDefaultMotionState> motion;
     std::unique_ptr<btRigidBody> rigid;
     BodySpec spec;     // planar bodies
@@ -115,7 +119,7 @@ RigidWorld::RigidWorld(const Vec3& gravity, double margin) : impl_(std::make_uni
 void RigidWorld::Impl::add(Body&& b, const btTransform& start, double friction, double restitution,
                            const btVector3& inertia, bool kinematic) {
   b.motion = std::make_unique<btDefaultMotionState>(start);
-  btRigidBody::btRigidBodyConstructionInfo info(kinematic ? 0.0 : b.mass, b.motion.get(), b.shape.get(),
+  btRigidBody::btRigidBodyConstructionInfo info(kinematic ? 0.0 : b.mass, b.motion.get(), b.shape(),
                                                 kinematic ? btVector3(0, 0, 0) : inertia);
   info.m_friction = friction;
   info.m_restitution = restitution;
@@ -145,13 +149,13 @@ int RigidWorld::add_body(const BodySpec& spec_in) {
   b.spec = spec;
   b.mass = spec.mass;
   const Vec2 c = centroid(spec.outline);
-  b.shape = std::make_unique<btConvexHullShape>();
+  auto& hull = *b.hulls.emplace_back(std::make_unique<btConvexHullShape>());
   for (const Vec2& p : inset(spec.outline, impl_->margin)) {
-    b.shape->addPoint(btVector3(p[0] - c[0], p[1] - c[1], -0.5), false);
-    b.shape->addPoint(btVector3(p[0] - c[0], p[1] - c[1], 0.5), false);
+    hull.addPoint(btVector3(p[0] - c[0], p[1] - c[1], -0.5), false);
+    hull.addPoint(btVector3(p[0] - c[0], p[1] - c[1], 0.5), false);
   }
-  b.shape->recalcLocalAabb();
-  b.shape->setMargin(impl_->margin);
+  hull.recalcLocalAabb();
+  hull.setMargin(impl_->margin);
   btTransform start;
   start.setIdentity();
   start.setOrigin(btVector3(c[0], c[1], 0.0));
@@ -170,10 +174,15 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
                                 spec.friction, spec.restitution, spec.centre_of_mass[0], spec.centre_of_mass[1],
                                 spec.centre_of_mass[2], double(spec.hull_inset), double(spec.kinematic)});
   impl_->journal.insert(impl_->journal.end(), spec.inertia.data(), spec.inertia.data() + 9);
-  impl_->journal.push_back(double(spec.hull.vertices.size()));
-  for (const Vec3& p : spec.hull.vertices) impl_->journal.insert(impl_->journal.end(), {p[0], p[1], p[2]});
-  impl_->journal.push_back(double(spec.hull.triangles.size()));
-  for (const auto& t : spec.hull.triangles) impl_->journal.insert(impl_->journal.end(), {double(t[0]), double(t[1]), double(t[2])});
+  impl_->journal.push_back(double(spec.hulls.size()));
+  for (const auto& hull : spec.hulls) {
+    impl_->journal.push_back(double(hull.vertices.size()));
+    for (const Vec3& p : hull.vertices) impl_->journal.insert(impl_->journal.end(), {p[0], p[1], p[2]});
+    impl_->journal.push_back(double(hull.triangles.size()));
+    for (const auto& t : hull.triangles)
+      impl_->journal.insert(impl_->journal.end(), {double(t[0]), double(t[1]), double(t[2])});
+  }
+  if (spec.hulls.empty()) throw std::invalid_argument("a body needs a hull");
   if (!(spec.mass > 0.0)) throw std::invalid_argument("a body needs a positive mass");
   // The angular factor masks torques in world axes, but the inertia and the gyroscopic term still couple the axes:
   // only all three rotations or none can be held.
@@ -198,12 +207,21 @@ int RigidWorld::add_solid(const SolidSpec& spec) {
   btQuaternion to_principal;
   basis.getRotation(to_principal);
   if (!diagonal) b.principal_to_placed = to_principal.inverse();
-  b.shape = std::make_unique<btConvexHullShape>();
   const btMatrix3x3 to_body = basis.transpose();
-  for (const Vec3& p : spec.hull_inset ? spec.hull.vertices : inset_convex(spec.hull, impl_->margin))
-    b.shape->addPoint(to_body * v3(Vec3(p - spec.centre_of_mass)), false);
-  b.shape->recalcLocalAabb();
-  b.shape->setMargin(impl_->margin);
+  for (const auto& surface : spec.hulls) {
+    auto& hull = *b.hulls.emplace_back(std::make_unique<btConvexHullShape>());
+    for (const Vec3& p : spec.hull_inset ? surface.vertices : inset_convex(surface, impl_->margin))
+      hull.addPoint(to_body * v3(Vec3(p - spec.centre_of_mass)), false);
+    hull.recalcLocalAabb();
+    hull.setMargin(impl_->margin);
+  }
+  if (b.hulls.size() > 1) {  // a concave body: its convex pieces in one compound, each where it is in the body's frame
+    b.compound = std::make_unique<btCompoundShape>(false, int(b.hulls.size()));
+    btTransform here;
+    here.setIdentity();
+    for (const auto& hull : b.hulls) b.compound->addChildShape(here, hull.get());
+    b.compound->setMargin(impl_->margin);
+  }
   btTransform start;
   start.setIdentity();
   start.setOrigin(v3(spec.centre_of_mass));
@@ -532,12 +550,15 @@ void RigidWorld::replay(const std::vector<double>& journal) {
         spec.hull_inset = next() != 0.0;
         spec.kinematic = next() != 0.0;
         for (int k = 0; k < 9; ++k) spec.inertia.data()[k] = next();
-        const auto n = static_cast<std::size_t>(next());
-        for (std::size_t k = 0; k < n; ++k) spec.hull.vertices.push_back(vec3());
-        const auto m = static_cast<std::size_t>(next());
-        for (std::size_t k = 0; k < m; ++k) {
-          const int a = static_cast<int>(next()), b = static_cast<int>(next());
-          spec.hull.triangles.push_back({a, b, static_cast<int>(next())});
+        spec.hulls.resize(static_cast<std::size_t>(next()));
+        for (auto& hull : spec.hulls) {
+          const auto n = static_cast<std::size_t>(next());
+          for (std::size_t k = 0; k < n; ++k) hull.vertices.push_back(vec3());
+          const auto m = static_cast<std::size_t>(next());
+          for (std::size_t k = 0; k < m; ++k) {
+            const int a = static_cast<int>(next()), b = static_cast<int>(next());
+            hull.triangles.push_back({a, b, static_cast<int>(next())});
+          }
         }
         add_solid(spec);
         break;

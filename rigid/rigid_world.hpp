@@ -44,7 +44,9 @@ struct SpatialState {
 };
 
 struct SolidSpec {
-  TriangleSurface hull;                 // the body's convex surface, outward, world coordinates at creation, m
+  // The body's convex surface, or a concave body's convex pieces (mesh/convex_decomposition.hpp): outward, world
+  // coordinates at creation, m.
+  std::vector<TriangleSurface> hulls;
   Vec3 centre_of_mass = Vec3::Zero();   // m
   Mat3 inertia = Mat3::Identity();      // about the centre of mass, in world axes at creation, kg m^2
   double mass = 0.0;                    // kg
@@ -52,7 +54,7 @@ struct SolidSpec {
   double restitution = 0.0;
   std::array<bool, 6> locked{};         // x, y, z, then rotation about x, y, z held fixed
   bool kinematic = false;               // moved from outside (prescribed motion): collides but is not pushed
-  // true: `hull` is already the body's surface moved in by the collision margin (its maker built it so: a sphere's
+  // true: `hulls` are already the body's surface moved in by the collision margin (its maker built it so: a sphere's
   // of radius R - margin), taken as it is; false: add_solid moves it in (inset_convex).
   bool hull_inset = false;
 };

@@ -10,7 +10,7 @@ inline rigid::SolidSpec solid_box(const rigid::Vec3& centre, const rigid::Vec3& 
   const rigid::TriangleSurface s = rigid::box_surface(centre, size, axes);
   const rigid::MassProperties m = rigid::mass_properties(s);
   rigid::SolidSpec spec;
-  spec.hull = s;
+  spec.hulls = {s};
   spec.centre_of_mass = m.centroid;
   spec.mass = density * m.volume;
   spec.inertia = density * m.inertia;

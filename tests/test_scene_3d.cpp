@@ -471,8 +471,23 @@ TEST(Scene3D, RefusesABadMeshNamingTheKeyAndTheFile) {
     }
     return std::string("(accepted)");
   };
-  EXPECT_NE(message("ell.obj").find("bodies[0].shape.file"), std::string::npos) << message("ell.obj");
-  EXPECT_NE(message("ell.obj").find("not convex"), std::string::npos) << message("ell.obj");
+  // A concave body is taken as its convex pieces (SolidBody.ConcaveBodyCollidesAsItsConvexPieces)...
+  EXPECT_EQ(message("ell.obj"), "(accepted)");
+  const auto ell = build_scene<3>(load_scene_text(tank_scene("square", "bodies: [{name: b, shape: {type: mesh, file: "
+                                                                       "ell.obj}, density: 600}]\n"), {}), "s", dir);
+  EXPECT_NEAR(ell->bodies[0].mass, 600.0 * (0.04 * 0.04 - 0.02 * 0.02) * 0.02, 1e-12);
+  // ... but not yet one that a plane of symmetry cuts.
+  std::string cut = tank_scene("square", "bodies: [{name: b, shape: {type: mesh, file: ell.obj}, density: 600}]\n");
+  cut.replace(cut.find("min: [0, 0, 0]"), 14, "min: [0.05, 0, 0], symmetry: [x_min]");
+  cut.replace(cut.find("regions: [{type: below_level, level: 0.1}]"), 42,
+              "regions: [{type: box, min: [0.05, 0, 0], max: [0.1, 0.1, 0.02]}]");
+  try {
+    build_scene<3>(load_scene_text(cut, {}), "s", dir);
+    ADD_FAILURE() << "a concave body cut by a plane of symmetry was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key_path, "bodies[0].shape");
+    EXPECT_NE(std::string(e.what()).find("concave"), std::string::npos) << e.what();
+  }
   EXPECT_NE(message("open.obj").find("open.obj: it is not closed"), std::string::npos) << message("open.obj");
   EXPECT_NE(message("none.stl").find("none.stl: no such file"), std::string::npos) << message("none.stl");
 }
