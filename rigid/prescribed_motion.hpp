@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/hermite.hpp"
 #include "rigid/ln_cosh_law.hpp"
 #include "rigid/rigid_world.hpp"
 
@@ -66,18 +67,10 @@ class PrescribedMotion {
       s.velocity = law_->speed(t) * direction_;
       return s;
     }
-    if (t < samples_.front().time || t > samples_.back().time)
-      throw std::out_of_range("time " + std::to_string(t) + " s outside the prescribed motion's samples");
-    std::size_t k = std::upper_bound(samples_.begin(), samples_.end(), t,
-                                     [](double v, const MotionSample& m) { return v < m.time; }) -
-                    samples_.begin();
-    k = std::min(std::max<std::size_t>(k, 1), samples_.size() - 1) - 1;
+    const std::size_t k = segment_holding(samples_, t);
     const MotionSample &a = samples_[k], &b = samples_[k + 1];
     const double h = b.time - a.time, u = (t - a.time) / h;
-    // Hermite basis and its derivative with respect to u.
-    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
-                 h11 = u * u * (u - 1);
-    const double d00 = 6 * u * u - 6 * u, d10 = 3 * u * u - 4 * u + 1, d01 = -d00, d11 = 3 * u * u - 2 * u;
+    const auto [h00, h10, h01, h11, d00, d10, d01, d11] = HermiteBasis(u);
     s.position = h00 * a.state.position + (h10 * h) * a.state.velocity + h01 * b.state.position +
                  (h11 * h) * b.state.velocity;
     s.velocity = (d00 / h) * a.state.position + d10 * a.state.velocity + (d01 / h) * b.state.position +
