@@ -356,8 +356,33 @@ void fill_fluid_regions(SceneBuild<3>& b) {
   for (const auto& x : P.position) b.lo = b.lo.cwiseMin(x), b.hi = b.hi.cwiseMax(x);
 }
 
-// Regions: their volume; below_level water: each tank's floor area times the depth below the level; tanks: their floor
-// and sides' area times their layers' thickness.
+namespace {
+
+// The volume below `level` inside the tank [lo, hi] and above the terrains: the midpoint rule on squares of dp over its
+// floor, each square's column from the highest terrain there (the tank's floor where none is) up to the level.
+double water_volume_below(double level, const Vec<3>& lo, const Vec<3>& hi, const std::vector<HeightGrid>& terrains,
+                          double dp) {
+  const double top = std::min(level, hi[2]);
+  if (!(top > lo[2])) return 0.0;
+  const long nx = std::max(1L, std::lround((hi[0] - lo[0]) / dp)), ny = std::max(1L, std::lround((hi[1] - lo[1]) / dp));
+  const double ax = (hi[0] - lo[0]) / double(nx), ay = (hi[1] - lo[1]) / double(ny);
+  double volume = 0.0;
+  for (long i = 0; i < nx; ++i)
+    for (long j = 0; j < ny; ++j) {
+      double ground = lo[2];
+      for (const auto& g : terrains) {
+        const double h = terrain_height(g, lo[0] + (double(i) + 0.5) * ax, lo[1] + (double(j) + 0.5) * ay);
+        if (std::isfinite(h)) ground = std::max(ground, h);
+      }
+      volume += ax * ay * std::max(0.0, top - ground);
+    }
+  return volume;
+}
+
+}  // namespace
+
+// Regions: their volume; below_level water: the volume below the level inside each tank and above its terrains;
+// tanks: their floor and sides' area times their layers' thickness; terrains: their area times their layers' reach.
 double estimated_particles(const SceneBuild<3>& b) {
   const double dp = b.dp, cell = dp * dp * dp;
   double n = 0.0, level = -INFINITY;
@@ -373,10 +398,12 @@ double estimated_particles(const SceneBuild<3>& b) {
       level = std::max(level, rn["level"].as<double>());
     }
   }
-  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {  // a terrain: its surface's area times its particles' reach
+  std::vector<HeightGrid> terrains;
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];
     if (wn["type"].as<std::string>() != "terrain") continue;
-    const rigid::TriangleSurface s = terrain_surface(terrain_grid(b, wn, w));
+    terrains.push_back(terrain_grid(b, wn, w));
+    const rigid::TriangleSurface s = terrain_surface(terrains.back());
     double area = 0.0;
     for (const auto& t : s.triangles)
       area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
@@ -391,7 +418,7 @@ double estimated_particles(const SceneBuild<3>& b) {
     const double sides = 2.0 * (size[0] + size[1] + 4 * t) * t * size[2];
     n += (floor + sides) / cell;
     if (std::isfinite(level))
-      n += size[0] * size[1] * std::clamp(level - wn["min"][2].as<double>(), 0.0, size[2]) / cell;
+      n += water_volume_below(level, vec_of<3>(wn["min"]), vec_of<3>(wn["max"]), terrains, dp) / cell;
   }
   return n;
 }
