@@ -90,7 +90,7 @@ void check_symmetry_locks(const SceneBuild<3>& b, const YAML::Node& bn, const So
       const auto& first = motion.prescribed_3d->samples().front();
       for (const auto& m : motion.prescribed_3d->samples())
         if (std::abs(plane.normal.dot(Vec<3>(m.position - first.position))) > 1e-9 * b.dp ||
-            turn_angle(m.orientation) > 1e-9)
+            std::abs(plane.normal.dot(Vec<3>(m.velocity))) > 1e-6 || turn_angle(m.orientation) > 1e-9)
           throw SceneError(path + ".prescribed.file",
                            fmt::format("the symmetry plane {} cuts this body, which must then move along it without "
                                        "turning; at t = {:.6g} s the series leaves it or turns",

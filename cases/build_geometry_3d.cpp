@@ -251,7 +251,8 @@ struct RegionFill {
     const double eps = 1e-9 * b.dp;
     std::size_t added = 0;
     for_each_lattice_point(b.sim->options.lattice, b.dp, lo, hi, [&](const Vec<3>& p) {
-      if (!inside(p) || !b.in_period(p[0]) || !on_modelled_side(planes, p, eps) || body_near(b, p) >= 0 ||
+      // The scene's side first: `inside` may refuse a point (outside the tanks, in a slide) that a plane cuts off.
+      if (!b.in_period(p[0]) || !on_modelled_side(planes, p, eps) || !inside(p) || body_near(b, p) >= 0 ||
           !clear_of_terrains(b, p))
         return;
       P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);

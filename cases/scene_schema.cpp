@@ -411,8 +411,9 @@ Schema shape_schema_3d(const std::string& description) {
                      S::map("a closed triangle mesh from a file, checked before anything runs: closed, its faces "
                             "consistently and outward oriented, a positive volume, no face cutting another "
                             "(mesh/closed_mesh.hpp); a point x of the file goes to position + R (scale x). It may be "
-                            "concave: a body then collides with walls as its convex pieces (HACD, "
-                            "mesh/convex_decomposition.hpp), and no plane of symmetry may cut it yet",
+                            "concave (a rigid body then collides with walls as its convex pieces: HACD, "
+                            "mesh/convex_decomposition.hpp), but a body's concave mesh may not be cut by a plane of "
+                            "symmetry yet",
                             {{"file", S::text("an .stl (binary or ASCII) or .obj file, relative to the scene's folder",
                                               std::nullopt)},
                              {"scale", S::number("factor on the file's coordinates (e.g. 0.001 for millimetres)", "",

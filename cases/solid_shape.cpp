@@ -251,7 +251,7 @@ rigid::TriangleSurface prism_of(const YAML::Node& shape, const std::string& path
   return rigid::prism_surface(vertices, shape["length"].as<double>(), centre, axes);
 }
 
-// The whole shape, before any symmetry cut; a mesh must be convex where `body` (Bullet takes its hull).
+// The whole shape, before any symmetry cut; a mesh may be concave (s.convex says which).
 SolidShape whole_shape(const YAML::Node& shape, const std::string& path, double dp, int layers,
                        const std::filesystem::path& scene_dir) {
   SolidShape s;
@@ -324,8 +324,8 @@ SolidShape solid_shape(const YAML::Node& shape, const std::string& path, const s
     if (!s.convex)  // the cut below is written for convex surfaces
       for (const auto& v : s.surface.vertices)
         if (!plane.keeps(Vec<3>(v)) && !plane.holds(Vec<3>(v), 1e-9 * dp))
-          throw SceneError(path + ".shape", fmt::format("the symmetry plane {} cuts this concave body, which is not "
-                                                        "supported yet (a convex body may be cut)", plane.key));
+          throw SceneError(path + ".shape", fmt::format("the symmetry plane {} cuts this concave shape: only a convex "
+                                                        "one may be cut yet", plane.key));
     try {
       s.surface = rigid::clip_convex(s.surface, plane.normal, plane.offset);
     } catch (const std::invalid_argument&) {

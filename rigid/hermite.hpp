@@ -25,10 +25,11 @@ struct HermiteBasis {
 };
 
 // The index k of the segment [samples[k].time, samples[k + 1].time] that holds t (the later one at a sample's time;
-// the last at the last time); std::out_of_range outside the samples.
+// the last at the last time); std::out_of_range outside the samples by more than the 1e-9 s a scene's check allows
+// (a run's last step ends at end_time to round-off).
 template <class Sample>
 std::size_t segment_holding(const std::vector<Sample>& samples, double t) {
-  if (t < samples.front().time || t > samples.back().time)
+  if (t < samples.front().time - 1e-9 || t > samples.back().time + 1e-9)
     throw std::out_of_range("time " + std::to_string(t) + " s outside the prescribed motion's samples");
   std::size_t k = std::upper_bound(samples.begin(), samples.end(), t,
                                    [](double v, const Sample& m) { return v < m.time; }) -

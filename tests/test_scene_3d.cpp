@@ -434,7 +434,7 @@ TEST(Scene3D, WaterRegionFillsTheInsideOfAShapeEvenAConcaveMesh) {
     const auto scene = build_scene<3>(load_scene_text(text, {}), "s", dir);
     std::vector<Vec<3>> points;
     const auto& P = scene->simulation->particles();
-    for (std::size_t i = 0; i < P.size(); ++i)
+    for (std::size_t i = 0; i < P.real_count(); ++i)  // not the mirror images beyond a plane of symmetry
       if (P.kind[i] == Kind::fluid) points.push_back(P.position[i]);
     return points;
   };
@@ -449,6 +449,18 @@ TEST(Scene3D, WaterRegionFillsTheInsideOfAShapeEvenAConcaveMesh) {
   EXPECT_EQ(as_mesh, as_box);
   EXPECT_EQ(refusal_key(with_region("{type: shape, shape: {type: sphere, center: [0.09, 0.05, 0.05], radius: 0.03}}")),
             "fluid.regions[0].shape");
+  // A shape a plane of symmetry cuts: its part on the scene's side, the plane's own points included (the lattice has a
+  // plane there): about half the sphere's 4/3 pi r^3 / dp^3 = 113.1 points.
+  std::string halved = with_region("{type: shape, shape: {type: sphere, center: [0, 0.05, 0.05], radius: 0.03}}");
+  halved.replace(halved.find("max: [0.1, 0.1, 0.2]}"), 21, "max: [0.1, 0.1, 0.2], symmetry: [x_min]}");
+  const auto half = water(halved);
+  std::size_t on_plane = 0;
+  for (const auto& p : half) {
+    EXPECT_GE(p[0], -1e-12);
+    on_plane += std::abs(p[0]) < 1e-12;
+  }
+  EXPECT_GT(on_plane, 0u);
+  EXPECT_NEAR(double(half.size()) - 0.5 * double(on_plane), 0.5 * 4.0 / 3.0 * M_PI * 27.0, 6.0) << half.size();
   const std::string sand = "bodies: [{name: sand, model: herschel_bulkley, shape: {type: box, center: [0.05, 0.05, "
                            "0.02], size: [0.04, 0.04, 0.02]}, density: 1800, rheology: {yield_stress: 50}}]\n";
   EXPECT_EQ(refusal_key(with_region("{type: shape, shape: {type: sphere, center: [0.05, 0.05, 0.04], radius: 0.02}}",

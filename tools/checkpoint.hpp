@@ -17,10 +17,10 @@ namespace slide::tools {
 
 // What a checkpoint's header names as its writer: slide's version and the format of the simulation's saved state. The
 // format's number changes with the state it holds (2: the corrected gradient's matrices, issue 29; 3: a checkpoint
-// can be taken while settling, issue 30), so that a
+// can be taken while settling, issue 30; 4: a solid body's journal holds its convex pieces, issue 31), so that a
 // checkpoint of another format is refused as such rather than misread (a format-1 checkpoint was refused as "the
 // checkpoint's bodies are not the scene's").
-inline std::string checkpoint_writer() { return std::string(SLIDE_VERSION) + ", state format 3"; }
+inline std::string checkpoint_writer() { return std::string(SLIDE_VERSION) + ", state format 4"; }
 
 struct CheckpointHeader {
   std::string version;         // checkpoint_writer() of the program that wrote it

@@ -289,6 +289,10 @@ def plot_plan_view(run, target):
             if "phase" in g:
                 water &= g["phase"][()] < water_phases
             frames.append((times[i], x[water]))
+    if not frames or not len(frames[0][1]):  # a dry scene (slides only), or no water at the first snapshot
+        print("plot_run: plan_view.png skipped (no water of the scene's own phases in the first snapshot)",
+              file=sys.stderr)
+        return
     lo = np.min([x[:, :2].min(axis=0) for _, x in frames if len(x)], axis=0)
     hi = np.max([x[:, :2].max(axis=0) for _, x in frames if len(x)], axis=0)
     cells = np.maximum(np.ceil((hi - lo) / square).astype(int), 1)
@@ -425,7 +429,11 @@ def main():
         plot_shapes(runs, os.path.join(out, "slide_shapes.png"))
     if os.path.exists(os.path.join(out, "particles.h5")):
         plot_particles(out, os.path.join(out, "particles.png"))
-        if json.load(open(os.path.join(out, "run.json")))["scene"].get("dimension") == 3:
+        try:
+            three_d = json.load(open(os.path.join(out, "run.json")))["scene"].get("dimension") == 3
+        except (OSError, KeyError, ValueError):
+            three_d = False
+        if three_d:
             plot_plan_view(out, os.path.join(out, "plan_view.png"))
 
 

@@ -28,7 +28,8 @@ struct IdOrdered {
   SnapshotFields fields() const { return {D, position, velocity, pressure, number_density, density, phase, kind, id}; }
 };
 
-// The 2-D-only outputs (bodies, slides, surge front, profiles) are absent from 3-D scenes so far.
+// Every CSV a scene asks for, in 2-D and 3-D (the 2-D diagnostics, surge front and velocity profile, are absent from
+// 3-D scenes so far).
 template <int D>
 class RunOutputs : public StepObserver<D> {
  public:
