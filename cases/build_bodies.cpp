@@ -142,17 +142,26 @@ BodyMotion read_motion(const SceneBuild<2>& b, const YAML::Node& bn, const std::
   motion.mode = BodyMotion::mode_names.parse(bn["motion"].as<std::string>());
   motion.free_while_settling =
       during_settling_names.parse(bn["during_settling"].as<std::string>()) == DuringSettling::free;
+  if (motion.mode != BodyMotion::Mode::rail && bn["rail"])
+    throw SceneError(path + ".rail", "applies to motion: rail only");
   if (motion.free_while_settling) {
     if (motion.mode != BodyMotion::Mode::free)
-      throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law)");
+      throw SceneError(path + ".during_settling", "free needs motion: free (a prescribed body follows its law, a rail "
+                                                  "body waits for its release)");
     if (motion.release_time > 0.0)
       throw SceneError(path + ".during_settling", "free contradicts release_time > 0 (which holds the body)");
     if (b.initial_state != InitialState::settled)
       throw SceneError(path + ".during_settling", "free needs method.initial_state: settled (there is no settling "
                                                   "otherwise)");
   }
-  if (motion.mode == BodyMotion::Mode::rail)
-    throw SceneError(path + ".motion", "rail: 3-D scenes only so far (a 2-D body on a slope: motion: free)");
+  if (motion.mode == BodyMotion::Mode::rail) {  // as in 3-D (cases/build_bodies_3d.cpp read_rail), in the plane
+    if (!bn["rail"]) throw SceneError(path + ".rail", "motion: rail needs a rail map (its direction)");
+    if (bn["locked"].size() > 0)
+      throw SceneError(path + ".locked", "applies to free motion only (a rail holds the rest)");
+    const Vec<2> d = vec2(bn["rail"]["direction"]);
+    if (!(d.norm() > 0.0)) throw SceneError(path + ".rail.direction", "must not be zero");
+    motion.rail = rigid::Rail{{d[0] / d.norm(), d[1] / d.norm(), 0.0}, bn["rail"]["friction"].as<double>()};
+  }
   if (motion.mode == BodyMotion::Mode::prescribed) motion.prescribed = read_prescribed(b, bn, path, outline);
   return motion;
 }
@@ -207,7 +216,7 @@ void add_rigid_body(SceneBuild<2>& b, const YAML::Node& bn, const std::string& p
                     const std::vector<rigid::Vec2>& outline) {
   rigid::BodySpec spec = rigid_spec(bn, outline, path);
   const BodyMotion motion = read_motion(b, bn, path, outline);
-  spec.kinematic = motion.mode == BodyMotion::Mode::prescribed;
+  spec.kinematic = motion.mode != BodyMotion::Mode::free;  // a rail body's one freedom is integrated outside Bullet
   const double area = rigid::signed_area(outline);
   const double density = spec.mass / area;
   const std::string name = bn["name"].as<std::string>();

@@ -107,12 +107,21 @@ Schema body_schema() {
                                      "direction", "", 2, std::vector<double>{1.0, 0.0})},
        {"motion",
         S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
-                  "the law in `prescribed`; rail: 3-D scenes only",
+                  "the law in `prescribed`; rail: moves along `rail.direction` only, without turning, under gravity "
+                  "and the fluid (two-way coupled), the rail taking the force across it and its friction opposing "
+                  "the motion (rigid/rail_motion.hpp); it passes through walls (the rail keeps it off them)",
                   BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
+       {"rail",
+        S::map("a rail the body runs on (motion: rail), from where it is put; held there until release_time",
+               {{"direction", S::vector("direction of the rail (made unit)", "", 2, std::nullopt)},
+                {"friction", S::number("Coulomb coefficient of the rail: the friction force is this times the force "
+                                       "the rail takes across it (per unit width)",
+                                       "", 0.0, 0.0, 10.0)}},
+               false)},
        {"locked", S::list("components held fixed (free motion)",
                           S::choice("component", locked_component_names.names(), std::nullopt))},
        {"release_time",
-        S::number("a free body is held in place until this time while the water settles", "s", 0.0, 0.0, S::inf)},
+        S::number("a free or rail body is held in place until this time", "s", 0.0, 0.0, S::inf)},
        {"during_settling", S::choice("settled start (method.initial_state: settled): held keeps the body where it is "
                                      "put while the water settles; free first moves a rigid body lighter than water "
                                      "up or down to its draft below the still-water level (Archimedes on its outline, "

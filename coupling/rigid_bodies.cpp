@@ -293,8 +293,19 @@ void RigidBodies<D>::move_on_rail(int b, const Vec<D>& fluid_force, double dt) {
     s.velocity = rigid::Vec3(speed * d);
     s.angular_velocity = rigid::Vec3::Zero();
     world.set_kinematic_state(b, s);
-  } else {
-    throw std::logic_error("a rail body in a 2-D scene");
+  } else {  // the same in the plane: mass and forces per unit width
+    const rigid::Rail& rail = *motion[static_cast<std::size_t>(b)].rail;
+    const Vec<2> d(rail.direction[0], rail.direction[1]);
+    const double mass = world.mass(b);
+    const Vec<2> force = fluid_force + mass * gravity_;
+    const double along = force.dot(d);
+    rigid::PlanarState s = world.state(b);
+    const double speed =
+        rigid::rail_speed_after(Vec<2>(s.velocity).dot(d), along, (force - along * d).norm(), mass, rail.friction, dt);
+    s.position += rigid::Vec2(dt * speed * d);
+    s.velocity = rigid::Vec2(speed * d);
+    s.angular_velocity = 0.0;
+    world.set_kinematic_state(b, s);
   }
 }
 

@@ -64,6 +64,35 @@ TEST(RailMotion, ABoxInAirSlidesDownItsRailAsTheClosedFormSays) {
   EXPECT_EQ(rigid::Quat(s.orientation).angularDistance(rigid::Quat::Identity()), 0.0);
 }
 
+// The same in 2-D (the same key, mass and forces per unit width): a box 0.3 x 0.1 of 2000 kg/m^3 on a rail down a 15
+// degree slope, friction 0.2, held until 0.01 s, travels the same s_n and keeps its angle.
+TEST(RailMotion, ABoxInAirSlidesDownItsRailIn2DAsTheClosedFormSays) {
+  const double g = 9.81, theta = 15.0 * M_PI / 180.0, mu = 0.2, dt = 1e-3;
+  RigidBodies<2> bodies(Vec<2>(0.0, -g), 1e-3);
+  rigid::BodySpec spec;
+  spec.outline = {{0.25, 0.15}, {0.55, 0.15}, {0.55, 0.25}, {0.25, 0.25}};
+  spec.mass = 2000.0 * 0.3 * 0.1;
+  spec.inertia = spec.mass * (0.3 * 0.3 + 0.1 * 0.1) / 12.0;
+  spec.kinematic = true;
+  BodyMotion motion;
+  motion.mode = BodyMotion::Mode::rail;
+  motion.rail = rigid::Rail{{std::cos(theta), -std::sin(theta), 0.0}, mu};
+  motion.release_time = 0.01;
+  bodies.add("box", spec, motion, 2000.0);
+  const Vec<2> d(std::cos(theta), -std::sin(theta)), start(0.4, 0.2);
+  for (int k = 0; k < 10; ++k) bodies.advance((k + 1) * dt, dt);
+  EXPECT_EQ((Vec<2>(bodies.state(0).position) - start).norm(), 0.0);
+  const int n = 500;
+  for (int k = 10; k < 10 + n; ++k) bodies.advance((k + 1) * dt, dt);
+  const double a = g * (std::sin(theta) - mu * std::cos(theta));
+  const auto s = bodies.state(0);
+  const double travel = a * dt * dt * n * (n + 1) / 2.0;
+  EXPECT_NEAR((Vec<2>(s.position) - (start + travel * d)).norm(), 0.0, 1e-12 * travel);
+  EXPECT_NEAR((Vec<2>(s.velocity) - a * n * dt * d).norm(), 0.0, 1e-12 * a * n * dt);
+  EXPECT_EQ(s.angular_velocity, 0.0);
+  EXPECT_EQ(s.angle, 0.0);
+}
+
 // A box on a frictionless rail through water (the prescribed test's scene with motion: rail): whatever the water does,
 // the box stays on its rail, unturned, and the momentum it has along the rail is exactly what gravity and the water
 // gave it there, step by step: m v . d = sum over steps of dt (F_fluid + m g) . d.
@@ -119,7 +148,55 @@ bodies:
   }
 }
 
-TEST(RailMotion, RefusesARailWithoutDirectionOrIn2D) {
+// The 2-D box through water on its rail (a 2-D scene, the same keys): on the rail, unturned, its momentum along the
+// rail (per unit width) what gravity and the water gave it there, and its particles moved with it.
+TEST(RailMotion, ABoxThroughWaterIn2DGainsTheMomentumGravityAndTheWaterGiveAlongItsRail) {
+  const auto dir = fresh_directory("rail_2d");
+  write_file(dir / "s.yaml", R"(particle_spacing: 0.01
+end_time: 1
+method: {sound_speed: 10, initial_state: lattice}
+fluid:
+  phases: [{name: water, rheology: {viscosity: 0.01}}]
+  regions: [{type: below_level, level: 0.3}]
+walls:
+  - points: [[0, 0.5], [0, 0], [0.4, 0], [0.4, 0.5]]
+bodies:
+  - name: slide
+    shape: {type: box, center: [0.2, 0.15], size: [0.1, 0.06], angle: -15}
+    density: 2000
+    motion: rail
+    rail: {direction: [0.9659258, -0.2588190]}
+)");
+  auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "s");
+  auto& sim = *scene->simulation;
+  auto& bodies = *sim.bodies();
+  const Vec<2> centre(0.2, 0.15), d = Vec<2>(0.9659258, -0.2588190).normalized();
+  const double mass = bodies.world.mass(0);
+  std::vector<std::pair<std::size_t, Vec<2>>> start;
+  for (std::size_t i = 0; i < sim.particles().real_count(); ++i)
+    if (sim.particles().body_of(i) == 0) start.emplace_back(sim.particles().id[i], sim.particles().position[i]);
+  ASSERT_FALSE(start.empty());
+  double impulse = 0.0;
+  for (int k = 0; k < 150; ++k) {
+    auto [dt, limit] = sim.allowed_time_step();
+    ASSERT_FALSE(sim.step(dt, limit).has_value());
+    impulse += dt * (bodies.force[0].total() + mass * Vec<2>(0.0, -9.81)).dot(d);
+  }
+  const auto s = bodies.state(0);
+  const Vec<2> moved = Vec<2>(s.position) - centre;
+  EXPECT_GT(moved.dot(d), 0.0005);  // it slid (a twentieth of a spacing at least)
+  EXPECT_LT((moved - moved.dot(d) * d).norm(), 1e-15);
+  EXPECT_NEAR(mass * Vec<2>(s.velocity).dot(d), impulse, 1e-12 * std::abs(impulse));
+  EXPECT_EQ(s.angular_velocity, 0.0);
+  const auto& P = sim.particles();
+  for (const auto& [id, x0] : start) {
+    std::size_t i = 0;
+    while (P.id[i] != id) ++i;
+    ASSERT_NEAR((P.position[i] - (x0 + moved)).norm(), 0.0, 1e-12);
+  }
+}
+
+TEST(RailMotion, RefusesARailWithoutDirectionIn2DAnd3D) {
   const std::string body3 = R"(dimension: 3
 particle_spacing: 0.02
 lattice: square
@@ -161,10 +238,14 @@ bodies:
   EXPECT_EQ(key(cut + "motion: rail, rail: {direction: [1, 0, 0]}}\n", 3), "(accepted)");
   EXPECT_EQ(key(cut + "motion: rail, rail: {direction: [1, 1, 0]}}\n", 3), "bodies[0].rail.direction");
   EXPECT_EQ(key(cut + "motion: rail, rail: {direction: [1, 0, 0], friction: 0.1}}\n", 3), "bodies[0].rail.friction");
-  EXPECT_EQ(key(std::string(kGoodScene) + "bodies: [{name: b, shape: {type: box, center: [0.4, 0.1], size: [0.05, "
-                                          "0.05]}, density: 2000, motion: rail}]\n",
-                2),
-            "bodies[0].motion");
+  // 2-D: the same key, its direction in the plane.
+  const std::string body2 = std::string(kGoodScene) + "bodies: [{name: b, shape: {type: box, center: [0.4, 0.1], "
+                                                      "size: [0.05, 0.05]}, density: 2000, ";
+  EXPECT_EQ(key(body2 + "motion: rail, rail: {direction: [1, -1]}}]\n", 2), "(accepted)");
+  EXPECT_EQ(key(body2 + "motion: rail}]\n", 2), "bodies[0].rail");
+  EXPECT_EQ(key(body2 + "motion: rail, rail: {direction: [0, 0]}}]\n", 2), "bodies[0].rail.direction");
+  EXPECT_EQ(key(body2 + "rail: {direction: [1, 0]}}]\n", 2), "bodies[0].rail");
+  EXPECT_EQ(key(body2 + "motion: rail, rail: {direction: [1, 0, 0]}}]\n", 2), "bodies[0].rail.direction");
 }
 
 }  // namespace
