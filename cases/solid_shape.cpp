@@ -245,7 +245,7 @@ rigid::TriangleSurface prism_of(const YAML::Node& shape, const std::string& path
   for (const auto& p : points_of(shape["outline"])) outline.emplace_back(p[0], p[1]);
   outline = rigid::counter_clockwise(outline);
   if (!rigid::is_convex_ccw(outline))
-    throw SceneError(path + ".shape.outline", "must be a convex polygon (concave bodies are not supported yet)");
+    throw SceneError(path + ".shape.outline", "must be a convex polygon (a concave body: give it as a mesh)");
   std::vector<std::array<double, 2>> vertices;
   for (const auto& v : outline) vertices.push_back({v[0], v[1]});
   return rigid::prism_surface(vertices, shape["length"].as<double>(), centre, axes);
