@@ -71,6 +71,26 @@ Schema wall_schema() {
                            false)}});
 }
 
+// A body's motion and its rail, the same keys in 2-D and 3-D (a rail's direction has the scene's dimension; 2-D's
+// masses and forces are per unit width).
+Schema motion_schema() {
+  return S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows the law in "
+                   "`prescribed` (the fluid's force on it is still reported); rail: moves along `rail.direction` "
+                   "only, without turning, under gravity and the fluid (two-way coupled), the rail taking the force "
+                   "across it and its friction opposing the motion (rigid/rail_motion.hpp); it passes through walls "
+                   "(the rail keeps it off them)",
+                   BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)));
+}
+
+Schema rail_schema(int dimension) {
+  return S::map("a rail the body runs on (motion: rail), from where it is put; held there until release_time",
+                {{"direction", S::vector("direction of the rail (made unit)", "", dimension, std::nullopt)},
+                 {"friction", S::number("Coulomb coefficient of the rail: the friction force is this times the force "
+                                        "the rail takes across it",
+                                        "", 0.0, 0.0, 10.0)}},
+                false);
+}
+
 Schema body_schema() {
   return S::map(
       "a slide or floating body; model rigid makes it a Bullet rigid body whose boundary particles (wall layer + "
@@ -105,19 +125,8 @@ Schema body_schema() {
                                     "`friction`, which a deformable slide ignores: its default 0 would be frictionless)")},
        {"front_direction", S::vector("deformable slides: slide_front.csv's front is the particle furthest along this "
                                      "direction", "", 2, std::vector<double>{1.0, 0.0})},
-       {"motion",
-        S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows "
-                  "the law in `prescribed`; rail: moves along `rail.direction` only, without turning, under gravity "
-                  "and the fluid (two-way coupled), the rail taking the force across it and its friction opposing "
-                  "the motion (rigid/rail_motion.hpp); it passes through walls (the rail keeps it off them)",
-                  BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
-       {"rail",
-        S::map("a rail the body runs on (motion: rail), from where it is put; held there until release_time",
-               {{"direction", S::vector("direction of the rail (made unit)", "", 2, std::nullopt)},
-                {"friction", S::number("Coulomb coefficient of the rail: the friction force is this times the force "
-                                       "the rail takes across it (per unit width)",
-                                       "", 0.0, 0.0, 10.0)}},
-               false)},
+       {"motion", motion_schema()},
+       {"rail", rail_schema(2)},
        {"locked", S::list("components held fixed (free motion)",
                           S::choice("component", locked_component_names.names(), std::nullopt))},
        {"release_time",
@@ -537,20 +546,8 @@ Schema body_schema_3d() {
                                      "direction", "", 3, std::vector<double>{1.0, 0.0, 0.0})},
        {"locked", S::list("components held fixed: x, y, z (translations), rx, ry, rz (rotations about the axes)",
                           S::choice("component", {"x", "y", "z", "rx", "ry", "rz"}, std::nullopt))},
-       {"motion",
-        S::choice("free: moved by gravity, the fluid and contacts (two-way coupled); prescribed: follows the law in "
-                  "`prescribed` (the fluid's force on it is still reported); rail: moves along `rail.direction` only, "
-                  "without turning, under gravity and the fluid (two-way coupled), the rail taking the force across "
-                  "it and its friction opposing the motion (rigid/rail_motion.hpp); it passes through walls (the rail "
-                  "keeps it off them)",
-                  BodyMotion::mode_names.names(), std::string(BodyMotion::mode_names.name(BodyMotion::Mode::free)))},
-       {"rail",
-        S::map("a rail the body runs on (motion: rail), from where it is put; held there until release_time",
-               {{"direction", S::vector("direction of the rail (made unit)", "", 3, std::nullopt)},
-                {"friction", S::number("Coulomb coefficient of the rail: the friction force is this times the force "
-                                       "the rail takes across it",
-                                       "", 0.0, 0.0, 10.0)}},
-               false)},
+       {"motion", motion_schema()},
+       {"rail", rail_schema(3)},
        {"prescribed",
         S::variant(
             "prescribed motion (motion: prescribed)", "type",
