@@ -206,6 +206,42 @@ void build_walls(SceneBuild<3>& b) {
     if (b.r["walls"][w]["type"].as<std::string>() == "terrain") build_terrain(b, b.r["walls"][w], w, placed);
 }
 
+// A tank's floor and its sides that are not planes of symmetry, two triangles each, as thick as its particles reach
+// (fluid/box_walls.hpp); a terrain's triangles, facing up, as deep as its particles reach (terrain_reach).
+std::vector<WallFace<3>> crossing_faces(const SceneBuild<3>& b) {
+  std::vector<WallFace<3>> faces;
+  const auto rectangle = [&](const Vec<3>& a, const Vec<3>& along, const Vec<3>& across, int axis, double sign,
+                             double thickness) {
+    const Vec<3> inward = sign * Vec<3>::Unit(axis);
+    faces.push_back({{a, a + along, a + along + across}, inward, thickness});
+    faces.push_back({{a, a + along + across, a + across}, inward, thickness});
+  };
+  const FluidOptions<3>& opt = b.sim->options;
+  for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
+    const auto wn = b.r["walls"][w];
+    if (wn["type"].as<std::string>() == "terrain") continue;
+    const Vec<3> lo = vec_of<3>(wn["min"]), hi = vec_of<3>(wn["max"]), size = hi - lo;
+    const double thickness =
+        opt.lattice == LatticeKind::square ? tank_layers(b, wn) * b.dp : opt.re_over_dp * b.dp;
+    std::set<std::string> symmetric;
+    for (std::size_t f = 0; f < wn["symmetry"].size(); ++f) symmetric.insert(wn["symmetry"][f].as<std::string>());
+    const Vec<3> x = Vec<3>::UnitX() * size[0], y = Vec<3>::UnitY() * size[1], z = Vec<3>::UnitZ() * size[2];
+    rectangle(lo, x, y, 2, 1.0, thickness);
+    if (!symmetric.count("x_min")) rectangle(lo, y, z, 0, 1.0, thickness);
+    if (!symmetric.count("x_max")) rectangle(lo + x, y, z, 0, -1.0, thickness);
+    if (!symmetric.count("y_min")) rectangle(lo, x, z, 1, 1.0, thickness);
+    if (!symmetric.count("y_max")) rectangle(lo + y, x, z, 1, -1.0, thickness);
+  }
+  for (const auto& t : b.terrains)
+    for (const auto& tri : t.surface.triangles) {
+      const Vec<3> p0 = t.surface.vertices[tri[0]], p1 = t.surface.vertices[tri[1]], p2 = t.surface.vertices[tri[2]];
+      Vec<3> up = (p1 - p0).cross(p2 - p0).normalized();
+      if (up[2] < 0.0) up = -up;
+      faces.push_back({{p0, p1, p2}, up, terrain_reach(b)});
+    }
+  return faces;
+}
+
 namespace {
 
 // The deformable slide whose shape holds p (its centre strictly inside); -1 when none does. Slide and water particles
@@ -262,6 +298,17 @@ struct RegionFill {
     return added;
   }
 
+  // Water outside every tank (where the scene has tanks: nothing would hold it) or inside a deformable slide is an
+  // error naming the region (`outside_key`: the key that places it).
+  void refuse_misplaced(const Vec<3>& p, const std::string& path, const std::string& outside_key) const {
+    bool in_a_tank = insides.empty();
+    for (std::size_t u = 0; u < insides.size(); ++u) in_a_tank = in_a_tank || in_tank(p, u);
+    if (!in_a_tank) throw SceneError(outside_key, fmt::format("water at {} lies outside every tank", position_text(p)));
+    if (const int k = slide_holding(b, p); k >= 0)
+      throw SceneError(path, fmt::format("water at {} lies inside the deformable slide {}", position_text(p),
+                                         b.slides[k].path));
+  }
+
   void refuse_if_empty(std::size_t added, const std::string& path) const {
     if (added == 0) throw SceneError(path, fmt::format("the region holds no particle at spacing dp = {} m", b.dp));
   }
@@ -285,9 +332,7 @@ struct RegionFill {
     const auto [in_lo, in_hi] = closed_on_planes(planes, lo, hi, 1e-9 * b.dp);
     refuse_if_empty(fill(lo, hi, ph, path, [&](const Vec<3>& p) {
                       if (!in_box(b.sim->options.lattice, p, in_lo, in_hi, b.dp)) return false;
-                      if (const int k = slide_holding(b, p); k >= 0)
-                        throw SceneError(path, fmt::format("water at {} lies inside the deformable slide {}",
-                                                           position_text(p), b.slides[k].path));
+                      refuse_misplaced(p, path, path + ".max");
                       return true;
                     }),
                     path);
@@ -301,14 +346,7 @@ struct RegionFill {
     for (const auto& v : s.surface.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     refuse_if_empty(fill(lo, hi, ph, path, [&](const Vec<3>& p) {
                       if (s.signed_distance(p) >= 0.0) return false;
-                      bool in_a_tank = insides.empty();
-                      for (std::size_t u = 0; u < insides.size(); ++u) in_a_tank = in_a_tank || in_tank(p, u);
-                      if (!in_a_tank)
-                        throw SceneError(path + ".shape", fmt::format("water at {} lies outside every tank",
-                                                                      position_text(p)));
-                      if (const int k = slide_holding(b, p); k >= 0)
-                        throw SceneError(path, fmt::format("water at {} lies inside the deformable slide {}",
-                                                           position_text(p), b.slides[k].path));
+                      refuse_misplaced(p, path, path + ".shape");
                       return true;
                     }),
                     path);

@@ -126,12 +126,7 @@ void set_domain(SceneBuild<D>& b) {
       if (!named) opt.mirrors.push_back(m);
     }
   }
-  if constexpr (D == 2) {
-    std::vector<WallFace> faces;
-    for (const auto& f : b.faces) faces.push_back({f.a, f.b, f.inward});
-    b.sim->wall_crossing =
-        WallCrossing(std::move(faces), boundary_layers(opt.re_over_dp) * b.dp, opt.domain_lo, opt.domain_hi, re);
-  }
+  b.sim->wall_crossing = WallCrossing<D>(crossing_faces(b), opt.domain_lo, opt.domain_hi, re);
 }
 
 // The kinds of a scene's particles counted (again after gates are lifted).

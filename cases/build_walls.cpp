@@ -110,4 +110,12 @@ void build_walls(SceneBuild<2>& b) {
     }
 }
 
+// The fixed walls' faces, each as thick as its particle layers (fluid/wall_crossing.hpp); 3-D's: build_geometry_3d.cpp.
+std::vector<WallFace<2>> crossing_faces(const SceneBuild<2>& b) {
+  std::vector<WallFace<2>> faces;
+  const double thickness = boundary_layers(b.sim->options.re_over_dp) * b.dp;
+  for (const auto& f : b.faces) faces.push_back({{f.a, f.b}, f.inward, thickness});
+  return faces;
+}
+
 }  // namespace slide::cases

@@ -126,6 +126,9 @@ void place_floating_bodies(SceneBuild<2>& b);     // build_bodies.cpp: bodies th
 void place_floating_bodies(SceneBuild<3>& b);     // build_bodies_3d.cpp
 void build_walls(SceneBuild<2>& b);               // build_walls.cpp
 void build_walls(SceneBuild<3>& b);               // build_geometry_3d.cpp
+// The fixed walls' faces for telling a particle that passed through a wall (fluid/wall_crossing.hpp).
+std::vector<WallFace<2>> crossing_faces(const SceneBuild<2>& b);  // build_walls.cpp
+std::vector<WallFace<3>> crossing_faces(const SceneBuild<3>& b);  // build_geometry_3d.cpp
 void build_slides_and_bodies(SceneBuild<2>& b);   // build_bodies.cpp
 void build_slides_and_bodies(SceneBuild<3>& b);   // build_bodies_3d.cpp
 // build_slides.cpp: a deformable slide's phase (named after bodies[k], of its density and rheology) and its report's

@@ -370,17 +370,21 @@ Schema velocity_profile_schema() {
       false);
 }
 
-Schema domain_schema() {
+Schema domain_schema(int dim) {
+  const std::string period =
+      dim == 2 ? "periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must hold a whole number of "
+                 "lattice columns (dp apart, or 1.0746 dp on the hexagonal lattice, to within 0.1 % of one); walls "
+                 "and regions may run past its ends (their points in the period are kept); no rigid bodies"
+               : "periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must hold a whole number "
+                 "of lattice columns";
   return S::map(
       "box a fluid particle may leave only through an open side (no wall): it is then taken out of the run and "
-      "counted in run.json's left_the_domain; one that passes through a wall is an instability; default: the "
-      "particles' bounding box enlarged by 4 re on every side and by half its height upwards",
-      {{"min", S::vector("lower corner", "m", 2, std::nullopt)},
-       {"max", S::vector("upper corner", "m", 2, std::nullopt)},
-       {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must "
-                                 "hold a whole number of lattice columns (dp apart, or 1.0746 dp on the hexagonal "
-                                 "lattice, to within 0.1 % of one); walls and regions may run past its ends (their points "
-                                 "in the period are kept); no rigid bodies", false)}},
+      "counted in run.json's left_the_domain; one that passes through a wall (past the back of its particle layers) is "
+      "an instability; default: the particles' bounding box enlarged by 4 re on every side and by half its height "
+      "upwards",
+      {{"min", S::vector("lower corner", "m", dim, std::nullopt)},
+       {"max", S::vector("upper corner", "m", dim, std::nullopt)},
+       {"periodic_x", S::boolean(period, false)}},
       false);
 }
 
@@ -506,17 +510,6 @@ Schema gauge_schema_3d() {
                  {"y", S::number("gauge position, y", "m", std::nullopt)}});
 }
 
-Schema domain_schema_3d() {
-  return S::map(
-      "box a fluid particle may leave only through an open side: it is then taken out of the run and counted in "
-      "run.json's left_the_domain; default: the particles' bounding box enlarged by 4 re on every side and by half "
-      "its height upwards",
-      {{"min", S::vector("lower corner", "m", 3, std::nullopt)},
-       {"max", S::vector("upper corner", "m", 3, std::nullopt)},
-       {"periodic_x", S::boolean("periodic in x with the period [min.x, max.x) (fluid/periodic.hpp), which must hold "
-                                 "a whole number of lattice columns", false)}},
-      false);
-}
 
 // Rigid bodies in 3-D: Bullet solids in six degrees of freedom (coupling/rigid_bodies.hpp).
 Schema body_schema_3d() {
@@ -596,7 +589,7 @@ Schema make_schema_3d() {
                              std::string(to_string(LatticeKind::fcc)))},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, S::inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 3, std::vector<double>{0.0, 0.0, -9.81})},
-       {"domain", domain_schema_3d()},
+       {"domain", domain_schema(3)},
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
                                       {"regions", S::list("regions filled with fluid (none: a dry scene, whose only fluid "
                                                           "is its deformable slides)",
@@ -630,7 +623,7 @@ Schema make_schema() {
                              std::string(to_string(MethodOptions{}.lattice)))},
        {"end_time", S::number("simulated time", "s", std::nullopt, 0.0, S::inf, true, false)},
        {"gravity", S::vector("gravitational acceleration", "m/s^2", 2, std::vector<double>{0.0, -9.81})},
-       {"domain", domain_schema()},
+       {"domain", domain_schema(2)},
        {"fluid", S::map("the fluid", {{"phases", S::list("fluid phases", phase_schema(), 1)},
                                       {"regions", S::list("regions filled with fluid (none: a dry scene, whose only fluid is its deformable slides)", region_schema(), 0)}})},
        {"walls", S::list("walls", wall_schema())},

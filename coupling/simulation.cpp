@@ -16,6 +16,7 @@
 #include "fluid/number_density.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/periodic.hpp"
+#include "coupling/position_text.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/wall_pressure.hpp"
 
@@ -291,7 +292,7 @@ std::pair<double, TimeStepLimit> Simulation<D>::allowed_time_step() const {
 template <int D>
 std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
   update_neighbors(false);
-  const bool walls_checked = D == 2 && !wall_crossing.empty();
+  const bool walls_checked = !wall_crossing.empty();
   if (walls_checked) {
     position_at_step_start_.resize(domain_.particles.real_count());
     parallel_for(domain_.particles.real_count(), [&](std::size_t i) { position_at_step_start_[i] = domain_.particles.position[i]; });
@@ -324,40 +325,31 @@ std::optional<Instability> Simulation<D>::step(double dt, TimeStepLimit limit) {
 // The wall face fluid particle i's move in this step went through (fluid/wall_crossing.hpp), or -1.
 template <int D>
 int Simulation<D>::face_crossed(std::size_t i) const {
-  if constexpr (D != 2) {
-    return -1;
-  } else {
-    const auto& P = domain_.particles;
-    if (P.kind[i] != Kind::fluid || i >= position_at_step_start_.size()) return -1;
-    return wall_crossing.crossed(position_at_step_start_[i], P.position[i]);
-  }
+  const auto& P = domain_.particles;
+  if (P.kind[i] != Kind::fluid || i >= position_at_step_start_.size()) return -1;
+  return wall_crossing.crossed(position_at_step_start_[i], P.position[i]);
 }
 
 // The crossing of lowest id (whatever the thread count), as an instability.
 template <int D>
 std::optional<Instability> Simulation<D>::wall_crossing_report() const {
-  if constexpr (D != 2) {
-    return std::nullopt;
-  } else {
-    const auto& P = domain_.particles;
-    const std::size_t n = P.real_count();
-    std::size_t pick = n;
-    for (std::size_t i = 0; i < n; ++i)
-      if (face_crossed(i) >= 0 && (pick == n || P.id[i] < P.id[pick])) pick = i;
-    if (pick == n) return std::nullopt;
-    const WallFace& f = wall_crossing.face(face_crossed(pick));
-    Instability s;
-    s.time = time_;
-    s.step = step_count_;
-    s.particle = P.id[pick];
-    s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
-    s.reason = fmt::format(
-        "passed through a wall: it moved from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g}) in one step, past the back of the "
-        "wall face ({:.6g}, {:.6g}) - ({:.6g}, {:.6g})",
-        position_at_step_start_[pick][0], position_at_step_start_[pick][1], P.position[pick][0], P.position[pick][1],
-        f.a[0], f.a[1], f.b[0], f.b[1]);
-    return s;
-  }
+  const auto& P = domain_.particles;
+  const std::size_t n = P.real_count();
+  std::size_t pick = n;
+  for (std::size_t i = 0; i < n; ++i)
+    if (face_crossed(i) >= 0 && (pick == n || P.id[i] < P.id[pick])) pick = i;
+  if (pick == n) return std::nullopt;
+  const WallFace<D>& f = wall_crossing.face(face_crossed(pick));
+  Instability s;
+  s.time = time_;
+  s.step = step_count_;
+  s.particle = P.id[pick];
+  s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
+  std::string face;
+  for (const Vec<D>& c : f.corner) face += (face.empty() ? "" : " - ") + position_text<D>(c);
+  s.reason = fmt::format("passed through a wall: it moved from {} to {} in one step, past the back of the wall face {}",
+                         position_text<D>(position_at_step_start_[pick]), position_text<D>(P.position[pick]), face);
+  return s;
 }
 
 // A fluid particle outside the domain's bounds (along a periodic x, only the other axes bound it). A NaN coordinate

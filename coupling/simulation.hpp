@@ -94,8 +94,8 @@ class Simulation {
   double largest_number_density_ratio_time() const { return largest_number_density_ratio_time_; }
 
   // The fixed walls' faces, for telling a particle that passed through a wall from one that left through an open side
-  // (fluid/wall_crossing.hpp). 2-D only; empty: no wall is checked, and every particle leaving the domain is removed.
-  WallCrossing wall_crossing;
+  // (fluid/wall_crossing.hpp). Empty: no wall is checked, and every particle leaving the domain is removed.
+  WallCrossing<D> wall_crossing;
   // The fluid particles taken out of the run because they left the domain, in the order they left (by id within a
   // step).
   const std::vector<LeftParticle>& left_the_domain() const { return left_the_domain_; }

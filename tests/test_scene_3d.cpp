@@ -449,6 +449,9 @@ TEST(Scene3D, WaterRegionFillsTheInsideOfAShapeEvenAConcaveMesh) {
   EXPECT_EQ(as_mesh, as_box);
   EXPECT_EQ(refusal_key(with_region("{type: shape, shape: {type: sphere, center: [0.09, 0.05, 0.05], radius: 0.03}}")),
             "fluid.regions[0].shape");
+  // A box region is held to the tanks as a shape is (before, its water outside them was taken).
+  EXPECT_EQ(refusal_key(with_region("{type: box, min: [0.02, 0.02, 0.02], max: [0.15, 0.05, 0.05]}")),
+            "fluid.regions[0].max");
   // A shape a plane of symmetry cuts: its part on the scene's side, the plane's own points included (the lattice has a
   // plane there): about half the sphere's 4/3 pi r^3 / dp^3 = 113.1 points.
   std::string halved = with_region("{type: shape, shape: {type: sphere, center: [0, 0.05, 0.05], radius: 0.03}}");
