@@ -32,12 +32,12 @@ namespace slide::cases {
 // the peak and the program's own at its start each move by 0.2 MB from run to run).
 // In 3-D (refitted at stop 52 to short runs of every shipped 3-D case at its spacing and a coarser one, as
 // LongMemoryEstimate runs them, 2 threads: 3,768 to 322,252 particles, mirror images included, 29 to 47 listed
-// neighbours a particle): 190 B a particle, 18 B a listed neighbour and 130 B more with snapshots, chosen on a grid of
-// whole steps for the widest margin on both sides of the test's bound: every estimate 2.0 % (Enet & Grilli at dp
+// neighbours a particle): 190 B a particle, 18 B a listed neighbour and 150 B more with snapshots, chosen on a grid of
+// whole steps for a margin on both sides of the test's bound: every estimate 2.4 % (the Enet & Grilli rail case at dp
 // 0.045) to 12.6 % (the bench case, no snapshots) above its peak. A fit, not a count: the split between a particle and
 // its neighbours is not well told apart by these runs (their counts differ little), a term per fluid particle or for
 // the semi-implicit viscosity's vectors (79 B a particle, measured on the Rzadkiewicz flume, implicit against
-// explicit) came out 0, and the snapshot's 130 B is more than the 30-80 B a particle that turning snapshots off frees
+// explicit) came out 0, and the snapshot's 150 B is more than the 30-80 B a particle that turning snapshots off frees
 // (it carries what the cases with snapshots hold beyond the bench case: mirror images are cheaper than particles, and
 // the bench has the most of them). Stop 48's 350 B + 12 B a neighbour + 230 B with snapshots lay 28 % above the
 // Rzadkiewicz flume's peak.
@@ -46,7 +46,7 @@ namespace slide::cases {
 // +1.8 MB (12,800, 2-D), +3.5 MB (38,788, 3-D): taken as 0.5 MB + 120 B a particle up to 32,768.
 double run_memory_bytes(const RunMemoryInputs& in) {
   const bool three_d = in.dimension == 3;
-  const double per_particle = three_d ? 190.0 + 18.0 * in.listed_per_particle + (in.snapshots ? 130.0 : 0.0)
+  const double per_particle = three_d ? 190.0 + 18.0 * in.listed_per_particle + (in.snapshots ? 150.0 : 0.0)
                                       : 310.0 + 12.0 * in.listed_per_particle + (in.snapshots ? 100.0 : 0.0) +
                                             (in.non_newtonian ? 80.0 : 0.0);
   const double deflate = in.snapshots && in.snapshot_deflate ? 0.5e6 + 120.0 * std::min(in.particles, 32768.0) : 0.0;
