@@ -1,6 +1,7 @@
 // diagnostics.gauge_records: measured wave-gauge records against a run's gauges (tools/measures/gauge_records.hpp),
 // the scene key that names them, and gauge_records.csv at the end of a run.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <limits>

@@ -1,5 +1,6 @@
 // Terrains from height grids (cases/height_grid.hpp) and as walls of a 3-D scene (walls[].type: terrain).
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <array>
 #include <cmath>

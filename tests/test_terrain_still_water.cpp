@@ -5,6 +5,8 @@
 // measured 3.72 % (and the same tank at dp 0.01 5.8 %; on the water's own lattice 0.027 %: docs/three-d.md).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "cases/scene.hpp"
