@@ -182,7 +182,7 @@ void lift_gates(Scene<D>& scene) {
   Simulation<D>& sim = *scene.simulation;
   Particles<D>& P = sim.particles();
   std::vector<char> is_gate(P.id_end(), 0);
-  for (const std::uint32_t id : scene.pending_gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
+  for (const ParticleId id : scene.pending_gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
   P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });
   scene.gate_particles = scene.pending_gate_ids.size();
   scene.pending_gate_ids.clear();

@@ -150,7 +150,7 @@ struct Scene {
   // Built with StartOfRun::left_to_caller: the settling still to run (with initial_state settled) and the gates still
   // to lift; complete_start finishes the start (build_scene does it otherwise).
   std::optional<SettlingPlan<D>> pending_settling;
-  std::vector<std::uint32_t> pending_gate_ids;
+  std::vector<ParticleId> pending_gate_ids;
   double body_sample_interval = 0.0;  // s, bodies.csv rows
 };
 

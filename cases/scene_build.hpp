@@ -82,7 +82,7 @@ struct SceneBuild {
     std::shared_ptr<const mesh::MeshDistance> distance;
   };
   std::vector<Terrain> terrains;
-  std::vector<std::uint32_t> gate_ids;  // the particles of gates (walls[].gate), taken away at t = 0
+  std::vector<ParticleId> gate_ids;  // the particles of gates (walls[].gate), taken away at t = 0
   // Set by build_slides_and_bodies: the rigid bodies and their outlines (counter-clockwise, world, t = 0), and the
   // deformable slides (filled with their phase's particles by fill_fluid_regions).
   std::shared_ptr<RigidBodies<D>> bodies;

@@ -47,8 +47,8 @@ class ColumnObserver : public StepObserver<2> {
   double speed = std::numeric_limits<double>::infinity();  // largest row speed after the last step
 
  private:
-  int row_of(std::uint32_t id) const { return static_cast<int>((id - first_fluid_) / columns_); }
-  int column_of(std::uint32_t id) const { return static_cast<int>((id - first_fluid_) % columns_); }
+  int row_of(ParticleId id) const { return static_cast<int>((id - first_fluid_) / columns_); }
+  int column_of(ParticleId id) const { return static_cast<int>((id - first_fluid_) % columns_); }
   Particles<2>& P_;
   std::size_t first_fluid_;
   int columns_;

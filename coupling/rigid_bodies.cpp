@@ -130,18 +130,32 @@ void RigidBodies<D>::accumulate(const Domain<D>& domain, const std::vector<Vec<D
   const Particles<D>& P = domain.particles;
   std::vector<Vec<D>> centre(size());
   for (std::size_t b = 0; b < size(); ++b) centre[b] = centre_of<D>(state(int(b)));
-  domain.sum_by_group(
-      pending_, [&](std::size_t i) { return P.body_of(i); },
-      [&](BodyFluidForce<D>& acc, std::size_t i) {
+  // Per body: the force's D components, then the torque's T (1 in 2-D, 3 in 3-D), each summed exactly.
+  constexpr std::size_t T = D == 2 ? 1 : 3;
+  using Values = std::array<double, D + T>;
+  const auto sums = domain.template sum_by_group<D + T>(
+      size(), [&](std::size_t i) { return P.body_of(i); },
+      [&](std::size_t i) {
         const Vec<D> arm = P.position[i] - centre[static_cast<std::size_t>(P.body_of(i))];
-        if (viscous) {
-          acc.viscous += f[i];
-          acc.viscous_torque += torque_of(arm, f[i]);
-        } else {
-          acc.pressure += f[i];
-          acc.pressure_torque += torque_of(arm, f[i]);
-        }
+        const Torque<D> t = torque_of(arm, f[i]);
+        Values v;
+        for (int k = 0; k < D; ++k) v[k] = f[i][k];
+        if constexpr (D == 2) v[D] = t;
+        else
+          for (int k = 0; k < 3; ++k) v[D + k] = t[k];
+        return v;
       });
+  for (std::size_t b = 0; b < size(); ++b) {
+    Vec<D> force;
+    Torque<D> torque = zero_torque<D>();
+    for (int k = 0; k < D; ++k) force[k] = sums[b][k];
+    if constexpr (D == 2) torque = sums[b][D];
+    else
+      for (int k = 0; k < 3; ++k) torque[k] = sums[b][D + k];
+    BodyFluidForce<D>& acc = pending_[b];
+    (viscous ? acc.viscous : acc.pressure) += force;
+    (viscous ? acc.viscous_torque : acc.pressure_torque) += torque;
+  }
 }
 
 // For every body particle j, the sum over its fluid neighbours i of pair_force(i, j) (the force fluid i exerts on

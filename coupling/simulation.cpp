@@ -3,6 +3,7 @@
 #include "fluid/corrective_matrix.hpp"
 
 #include <algorithm>
+#include <random>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -139,14 +140,18 @@ void Simulation<D>::update_neighbors(bool force) {
   // Drop the ghosts and bring the real particles back into the period before sorting them.
   domain_.drop_ghosts();
   domain_.bring_inside();
-  // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again.
-  grid_.bin(x);
+  // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again. Within a
+  // cell by id: every neighbour sum then runs in an order that is the same whatever the particles' storage order
+  // (fluid/neighbor_grid.hpp).
+  const auto key = [&P = domain_.particles](std::uint32_t j) { return P.order_key(j); };
+  grid_.bin(x, key);
   domain_.particles.reorder(grid_.sorted_indices(), scratch_);  // scratch_ is free between steps
+  if (storage_shuffle_seed_) shuffle_owned_particles();
   // Fresh ghosts behind the sorted real domain_.particles; they are binned and found as neighbours, but need no list of
   // their own (every stage computes real particles only and refreshes the ghosts).
-  if (domain_.make_ghosts(list_radius())) {
+  if (domain_.make_ghosts(list_radius()) || storage_shuffle_seed_) {
     scratch_.resize(domain_.particles.size(), Vec<D>::Zero());
-    grid_.bin(x);
+    grid_.bin(x, key);
   } else {
     grid_.follow_reorder();  // the binning of the sorted domain_.particles, known without binning them again
   }
@@ -155,6 +160,14 @@ void Simulation<D>::update_neighbors(bool force) {
   position_at_build_ = x;
   ++rebuilds_;
   correction_current_ = false;  // of the order before
+}
+
+template <int D>
+void Simulation<D>::shuffle_owned_particles() {
+  std::vector<std::uint32_t> order(domain_.particles.real_count());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(*storage_shuffle_seed_ + static_cast<std::uint64_t>(rebuilds_)));
+  domain_.particles.reorder(order, scratch_);
 }
 
 // Periodic: each sub-stage computes the real domain_.particles, and its result is copied into the ghosts before the next
@@ -740,7 +753,7 @@ void Simulation<D>::restore_state(StateReader& in) {
   // The neighbour list as it was built: from the positions of that moment, in the present order (no re-sort).
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();
-  grid_.bin(position_at_build_);
+  grid_.bin(position_at_build_, [&P = domain_.particles](std::uint32_t j) { return P.order_key(j); });
   build_neighbor_list(grid_, position_at_build_, list_radius(), list_, domain_.particles.real_count());
 }
 

@@ -50,7 +50,7 @@ struct ViscousSolveStats {
 
 // A fluid particle taken out of the run: it left the domain's bounds through an open side (fluid/wall_crossing.hpp).
 struct LeftParticle {
-  std::uint32_t id = 0;
+  ParticleId id = 0;
   double time = 0.0;                // s, the end of the step it left in
   std::vector<double> position;     // where it was then, m
 };
@@ -59,7 +59,7 @@ struct Instability {
   std::string reason;     // what went wrong
   double time = 0.0;
   long step = 0;
-  std::uint32_t particle = 0;  // id
+  ParticleId particle = 0;
   std::vector<double> position;
 };
 
@@ -135,6 +135,11 @@ class Simulation {
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
 
+  // For tests of the order independence (fluid/domain.hpp): after every re-sort the owned particles are stored in an
+  // order drawn at random from `seed`, as a process's share of them would be; every result must stay the same to the
+  // bit.
+  void shuffle_storage_after_sorting(std::uint64_t seed) { storage_shuffle_seed_ = seed; }
+
   // Checks the current state: non-finite values, number-density collapse, speed.
   std::optional<Instability> check() const;
 
@@ -166,6 +171,8 @@ class Simulation {
   void collide(double dt);
   void move_bodies(double dt);
   void remove_particles_that_left();
+  void shuffle_owned_particles();
+  std::optional<std::uint64_t> storage_shuffle_seed_;
 
   double particle_volume() const { return std::pow(options.dp, D); }  // per unit width in 2-D
   double list_radius() const { return re() + options.skin_over_dp * options.dp; }

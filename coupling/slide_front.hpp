@@ -60,7 +60,7 @@ SlideFrontOf<D> measure_slide_front(const Particles<D>& P, std::uint8_t phase,
                                     double column_width) {
   SlideFrontOf<D> f;
   double best = -std::numeric_limits<double>::infinity();
-  std::uint32_t best_id = 0;
+  ParticleId best_id = 0;
   for (std::size_t i = 0; i < P.real_count(); ++i) {  // real particles: not their images
     if (P.kind[i] != Kind::fluid || P.phase[i] != phase) continue;
     ++f.particles;

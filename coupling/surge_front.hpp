@@ -69,7 +69,7 @@ SurgeFront measure_surge_front(const Simulation<D>& sim, double wall_face_x, dou
     }
   }
   std::vector<std::size_t> size(n, 0);
-  std::vector<std::uint32_t> min_id(n, UINT32_MAX);
+  std::vector<ParticleId> min_id(n, std::numeric_limits<ParticleId>::max());
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::fluid) continue;
     const auto root = find(static_cast<std::uint32_t>(i));

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "fluid/exact_sum.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/ghosts.hpp"
@@ -93,16 +94,23 @@ class Domain {
   std::array<double, K> max_each_over_owned(const std::array<double, K>& init, F&& f) const {
     return parallel_max_each<K>(owned_count(), init, f);
   }
-  // Sums by group over the owned particles (a rigid body's force and torque over its boundary particles):
-  // add(sums[g], i) for every owned i with g = group_of(i) >= 0, serially, in the particles' order. That order is
-  // the same for any thread count; across processes the sums will have to be taken in an order that does not depend on
-  // the split (global ids, or an exact accumulator), which rounds differently from this one.
-  template <class Sum, class GroupOf, class Add>
-  void sum_by_group(std::vector<Sum>& sums, GroupOf&& group_of, Add&& add) const {
+  // Sums by group over the owned particles (a rigid body's force and torque over its boundary particles): entry g
+  // of the result is the sum of values(i) over every owned i with group_of(i) == g (component by component; i with
+  // group_of(i) < 0 count nowhere). Each sum is exact and rounded once (fluid/exact_sum.hpp), so it does not depend on
+  // the order of the terms: the same bits for any storage order, thread count and, combined across processes, split.
+  template <std::size_t K, class GroupOf, class Values>
+  std::vector<std::array<double, K>> sum_by_group(std::size_t groups, GroupOf&& group_of, Values&& values) const {
+    std::vector<std::array<ExactSum, K>> sums(groups);
     for (std::size_t i = 0; i < owned_count(); ++i) {
       const int g = group_of(i);
-      if (g >= 0) add(sums[static_cast<std::size_t>(g)], i);
+      if (g < 0) continue;
+      const std::array<double, K> v = values(i);
+      for (std::size_t k = 0; k < K; ++k) sums[static_cast<std::size_t>(g)][k].add(v[k]);
     }
+    std::vector<std::array<double, K>> out(groups);
+    for (std::size_t g = 0; g < groups; ++g)
+      for (std::size_t k = 0; k < K; ++k) out[g][k] = sums[g][k].value();
+    return out;
   }
 
  private:

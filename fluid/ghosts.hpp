@@ -89,7 +89,7 @@ void sync_ghosts(Particles<D>& P) {
       P.acceleration[t] = image_vector<D>(P.acceleration[s], flip);
       P.wall_normal[t] = image_vector<D>(P.wall_normal[s], flip);
     }
-    P.id[t] = static_cast<std::uint32_t>(first_ghost_id + g);
+    P.id[t] = static_cast<ParticleId>(first_ghost_id + g);
   });
 }
 

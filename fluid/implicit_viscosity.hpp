@@ -207,13 +207,14 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
     stiff_[i] = row.number > stiff;
     viscous_acceleration[i] = row.acceleration;
   });
+  // Unknowns numbered in id order: a row's columns (sorted) and the solver's sums over rows then run in an order that
+  // does not depend on where the particles are stored (fluid/domain.hpp).
   row_of_.assign(n, -1);
   particle_of_.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (stiff_[i]) {
-      row_of_[i] = static_cast<int>(particle_of_.size());
-      particle_of_.push_back(static_cast<std::uint32_t>(i));
-    }
+    if (stiff_[i]) particle_of_.push_back(static_cast<std::uint32_t>(i));
+  std::sort(particle_of_.begin(), particle_of_.end(), [&](std::uint32_t a, std::uint32_t b) { return P.id[a] < P.id[b]; });
+  for (std::size_t r = 0; r < particle_of_.size(); ++r) row_of_[particle_of_[r]] = static_cast<int>(r);
   const std::size_t rows = particle_of_.size();
   ViscousSolveReport report;
   if (rows == 0) return report;

@@ -2,6 +2,11 @@
 // Cell-list neighbour search. Cells are at least as large as the search radius, so the neighbours of a point lie
 // in its own cell and the 3^D cells around it. Points are binned with a stable counting sort, which also gives
 // the cell order used to re-sort particles for cache locality.
+//
+// Within a cell the points come in index order, or, binned with a key, in the order of their keys (the particles'
+// global ids: fluid/particles.hpp, order_key). With keys every neighbour sum runs in an order that depends on where the
+// particles are and who they are, not on where they are stored: the same for any process's share of them, which the
+// output's independence of the process count needs (DESIGN.md, "One domain seam").
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -55,18 +60,38 @@ class NeighborGrid {
     for (std::size_t i = 0; i < n; ++i) sorted_[fill[point_cell_[i]]++] = static_cast<std::uint32_t>(i);
   }
 
+  // Bins the points by cell, and within a cell by key(i) (distinct keys; equal ones keep index order).
+  template <class Key>
+  void bin(const std::vector<Vec<D>>& x, Key&& key) {
+    bin(x);
+    // Insertion sort within each cell: cells hold tens of points, and after a re-sort by this same order nearly all of
+    // them are in place already.
+    parallel_for(total_cells_, [&](std::size_t c) {
+      std::uint32_t* first = sorted_.data() + cell_start_[c];
+      std::uint32_t* last = sorted_.data() + cell_start_[c + 1];
+      for (std::uint32_t* p = first + 1; p < last; ++p) {
+        const std::uint32_t j = *p;
+        const auto kj = key(j);
+        std::uint32_t* q = p;
+        for (; q > first && key(q[-1]) > kj; --q) *q = q[-1];
+        *q = j;
+      }
+    });
+  }
+
   // Point indices ordered by cell: the permutation that re-sorts particles for locality.
   const std::vector<std::uint32_t>& sorted_indices() const { return sorted_; }
 
   // After the points were reordered by sorted_indices() (new point i is old point sorted_[i], positions unchanged):
-  // the binning bin() would now give, without computing it again. Every cell starts where it did, and the sorted
-  // order is the identity: bin is stable, and the reordered points come cell by cell in index order.
+  // the binning bin() would now give, without computing it again (with keys: bin with the same keys). Every cell
+  // starts where it did, and the sorted order is the identity: the reordered points come cell by cell in index order,
+  // which is bin's order (stable) and key order within a cell.
   void follow_reorder() {
     for (std::size_t s = 0; s < sorted_.size(); ++s) sorted_[s] = static_cast<std::uint32_t>(s);
   }
 
   // Calls f(j, r2) for every binned point j with |x_j - q|^2 < radius^2, in a fixed order (cells in lexicographic
-  // order, points within a cell in index order). radius must not exceed the cell size.
+  // order, points within a cell in index or key order). radius must not exceed the cell size.
   // Cells are numbered along x first and points are sorted by cell, so the cells of a row (fixed y, and z) that the
   // search visits hold one contiguous run of sorted points: each row is walked as one run, in the same order as cell
   // by cell (1 % faster on the bench case, stop 26; taking the run's points several at a time in SIMD lanes was not

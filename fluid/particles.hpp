@@ -13,6 +13,10 @@
 
 namespace slide {
 
+// A particle's global identity (DESIGN.md, "One domain seam"): 64 bits, kept through re-sorting, removal and, with
+// many processes, migration; every output is ordered by it.
+using ParticleId = std::uint64_t;
+
 enum class Kind : std::uint8_t {
   fluid = 0,  // moves with the flow (water or sediment, told apart by phase)
   wall = 1,   // first boundary layer: carries pressure, is seen by the pressure gradient and viscosity
@@ -38,7 +42,7 @@ struct Particles {
   std::vector<double> wall_fraction;
   std::vector<std::uint8_t> phase;
   std::vector<Kind> kind;
-  std::vector<std::uint32_t> id;  // stable identity: the index at creation, kept through re-sorting
+  std::vector<ParticleId> id;  // stable identity: the index at creation, kept through re-sorting
   // Boundary particles: unit normal of their wall face, pointing into the fluid, and their distance behind the
   // face (positive). Fluid particles hold zeros.
   std::vector<Vec<D>> wall_normal;
@@ -91,6 +95,19 @@ struct Particles {
     return j < r ? j : ghost_source[j - r];
   }
 
+  // Where particle j comes among the particles of its cell (fluid/neighbor_grid.hpp, bin with a key), and so in every
+  // neighbour sum: a real particle by its id, a ghost after its source, by which image it is (its flip, and its
+  // periodic shift's sign where x is not flipped). Distinct for distinct particles while ids stay below 2^59.
+  std::uint64_t order_key(std::size_t j) const {
+    const std::size_t r = real_count();
+    if (j < r) return id[j] << 5;
+    const std::size_t g = j - r;
+    const unsigned flip = ghost_flip[g];
+    const double shift = (flip & 1u) ? 0.0 : ghost_offset[g][0];
+    const unsigned periodic = shift > 0.0 ? 1u : shift < 0.0 ? 2u : 0u;
+    return id[ghost_source[g]] << 5 | (1u + flip + 8u * periodic);
+  }
+
   // Calls f(array) for every per-particle array (each of length size()): the one list of them, so that re-sorting,
   // ghost creation, copying and truncation cannot miss one.
   template <class F>
@@ -125,7 +142,7 @@ struct Particles {
     wall_fraction.push_back(1.0);
     phase.push_back(phase_index);
     kind.push_back(k);
-    id.push_back(static_cast<std::uint32_t>(i));
+    id.push_back(static_cast<ParticleId>(i));
     wall_normal.push_back(Vec<D>::Zero());
     wall_depth.push_back(0.0);
     wall_fill.push_back(1.0);

@@ -37,12 +37,12 @@ TEST(IdOrdered, RefilledInPlaceFromShuffledDenseAndThenGappedIds) {
   P.reorder(order, buffer);
   tools::IdOrdered<2> s(P);
   expect_by_id(s, P);
-  EXPECT_EQ(s.id, [] { std::vector<std::uint32_t> v(12); std::iota(v.begin(), v.end(), 0u); return v; }());
+  EXPECT_EQ(s.id, [] { std::vector<ParticleId> v(12); std::iota(v.begin(), v.end(), ParticleId{0}); return v; }());
   // Ids 3, 7 and 11 leave: the same snapshot, refilled, holds the nine others by id.
   P.remove_keeping_ids([&](std::size_t i) { return P.id[i] % 4 == 3; });
   s.assign(P);
   expect_by_id(s, P);
-  EXPECT_EQ(s.id, (std::vector<std::uint32_t>{0, 1, 2, 4, 5, 6, 8, 9, 10}));
+  EXPECT_EQ(s.id, (std::vector<ParticleId>{0, 1, 2, 4, 5, 6, 8, 9, 10}));
 }
 
 }  // namespace

@@ -100,6 +100,51 @@ void expect_follow_reorder_equals_fresh_bin(std::size_t n, double radius) {
 TEST(NeighborGrid, FollowingAReorderBinsAsAFreshBinDoes2D) { expect_follow_reorder_equals_fresh_bin<2>(6000, 0.03); }
 TEST(NeighborGrid, FollowingAReorderBinsAsAFreshBinDoes3D) { expect_follow_reorder_equals_fresh_bin<3>(6000, 0.1); }
 
+// Binned with keys (a particle's global id), every list names the same particles in the same order for any storage
+// order: the same points shuffled give lists equal key for key, and the order within a cell is by key. What a
+// process's share of the particles, stored in its own order, needs for its sums to match one process's.
+template <int D>
+void expect_keyed_lists_independent_of_storage(std::size_t n, double radius) {
+  const auto x = random_points<D>(n, 1.0, 5 + D);
+  std::vector<std::uint64_t> key(n);
+  for (std::size_t i = 0; i < n; ++i) key[i] = 1000 + 7 * ((i * 7919) % n);  // distinct, unrelated to the index
+  std::vector<std::uint32_t> perm(n);
+  for (std::size_t i = 0; i < n; ++i) perm[i] = static_cast<std::uint32_t>(i);
+  std::shuffle(perm.begin(), perm.end(), std::mt19937_64(3));
+  std::vector<Vec<D>> y(n);
+  std::vector<std::uint64_t> key_y(n);
+  for (std::size_t i = 0; i < n; ++i) y[i] = x[perm[i]], key_y[i] = key[perm[i]];
+  NeighborGrid<D> gx(Vec<D>::Zero(), Vec<D>::Ones(), radius), gy = gx;
+  gx.bin(x, [&](std::uint32_t j) { return key[j]; });
+  gy.bin(y, [&](std::uint32_t j) { return key_y[j]; });
+  NeighborList lx, ly;
+  build_neighbor_list(gx, x, radius, lx);
+  build_neighbor_list(gy, y, radius, ly);
+  std::size_t nonempty = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::uint64_t> a, b;
+    for (const std::uint32_t* q = lx.begin(perm[i]); q != lx.end(perm[i]); ++q) a.push_back(key[*q]);
+    for (const std::uint32_t* q = ly.begin(i); q != ly.end(i); ++q) b.push_back(key_y[*q]);
+    ASSERT_EQ(a, b) << "particle " << perm[i];
+    nonempty += !a.empty();
+  }
+  EXPECT_GT(nonempty, n / 2);
+  // Within a cell: increasing keys (cells are contiguous in the sorted indices).
+  const auto& s = gx.sorted_indices();
+  std::size_t in_key_order = 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const auto a = gx.cell_of(x[s[k - 1]]), b = gx.cell_of(x[s[k]]);
+    if (a == b) {
+      ASSERT_LT(key[s[k - 1]], key[s[k]]);
+      ++in_key_order;
+    }
+  }
+  EXPECT_GT(in_key_order, n / 2);
+}
+
+TEST(NeighborGrid, KeyedListsDoNotDependOnTheStorageOrder2D) { expect_keyed_lists_independent_of_storage<2>(5000, 0.04); }
+TEST(NeighborGrid, KeyedListsDoNotDependOnTheStorageOrder3D) { expect_keyed_lists_independent_of_storage<3>(5000, 0.12); }
+
 TEST(NeighborGrid, PointQueryMatchesBruteForce) {
   const auto x = random_points<2>(1000, 1.0, 9);
   NeighborGrid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), 0.08);

@@ -65,7 +65,7 @@ struct Snap {
   int dim;
   std::vector<double> position, velocity, pressure, number_density, density;
   std::vector<uint8_t> phase, kind;
-  std::vector<uint32_t> id;
+  std::vector<uint64_t> id;
   SnapshotFields fields() const {
     return SnapshotFields{dim, position, velocity, pressure, number_density, density,
                           phase, kind, id};
@@ -85,7 +85,7 @@ Snap make_snap(int dim, size_t n, double seed) {
     s.density.push_back(1000.0 + std::sqrt(2.0) * static_cast<double>(i) + seed);
     s.phase.push_back(static_cast<uint8_t>(i % 2));
     s.kind.push_back(static_cast<uint8_t>(i % 4));
-    s.id.push_back(static_cast<uint32_t>(100 + i * 3));
+    s.id.push_back(static_cast<uint64_t>(100 + i * 3));
   }
   return s;
 }
@@ -159,7 +159,7 @@ void expect_snapshot(hid_t master, size_t index, const Snap& s, double time, lon
   EXPECT_EQ(read_dataset<double>(master, base + "/density", H5T_NATIVE_DOUBLE), s.density);
   EXPECT_EQ(read_dataset<uint8_t>(master, base + "/phase", H5T_NATIVE_UINT8), s.phase);
   EXPECT_EQ(read_dataset<uint8_t>(master, base + "/kind", H5T_NATIVE_UINT8), s.kind);
-  EXPECT_EQ(read_dataset<uint32_t>(master, base + "/id", H5T_NATIVE_UINT32), s.id);
+  EXPECT_EQ(read_dataset<uint64_t>(master, base + "/id", H5T_NATIVE_UINT64), s.id);
   std::vector<uint32_t> cells(n);
   for (size_t i = 0; i < n; ++i) cells[i] = static_cast<uint32_t>(i);
   EXPECT_EQ(read_dataset<uint32_t>(master, base + "/connectivity", H5T_NATIVE_UINT32), cells);
@@ -253,7 +253,7 @@ TEST(SnapshotWriter, AFormatWritesTheChosenFieldsInSinglePrecision) {
     EXPECT_EQ(position[i * 3 + 1], static_cast<float>(s.position[i * 2 + 1]));
     EXPECT_EQ(position[i * 3 + 2], 0.0f);
   }
-  EXPECT_EQ(read_dataset<uint32_t>(master.id, base + "id", H5T_NATIVE_UINT32), s.id);
+  EXPECT_EQ(read_dataset<uint64_t>(master.id, base + "id", H5T_NATIVE_UINT64), s.id);
   EXPECT_EQ(read_dataset<uint8_t>(master.id, base + "kind", H5T_NATIVE_UINT8), s.kind);
   const std::string xdmf = read_text(dir.path / "particles.xdmf");
   EXPECT_EQ(count_occurrences(xdmf, "<Attribute "), 3u);  // pressure, kind, id

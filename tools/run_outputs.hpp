@@ -19,7 +19,7 @@ template <int D>
 struct IdOrdered {
   std::vector<double> position, velocity, pressure, number_density, density;
   std::vector<std::uint8_t> phase, kind;
-  std::vector<std::uint32_t> id;
+  std::vector<ParticleId> id;
 
   IdOrdered() = default;
   explicit IdOrdered(const Particles<D>& P) { assign(P); }

@@ -355,7 +355,7 @@ void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path
     if (format_.holds("phase"))
       write_dataset(fid, tmp, "phase", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.phase.data(), n, 0, deflate);
     write_dataset(fid, tmp, "kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.kind.data(), n, 0, deflate);
-    write_dataset(fid, tmp, "id", H5T_STD_U32LE, H5T_NATIVE_UINT32, f.id.data(), n, 0, deflate);
+    write_dataset(fid, tmp, "id", H5T_STD_U64LE, H5T_NATIVE_UINT64, f.id.data(), n, 0, deflate);
     std::vector<uint32_t> connectivity(n);
     for (size_t i = 0; i < n; ++i) connectivity[i] = static_cast<uint32_t>(i);
     write_dataset(fid, tmp, "connectivity", H5T_STD_U32LE, H5T_NATIVE_UINT32, connectivity.data(), n, 0, deflate);

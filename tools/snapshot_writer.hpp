@@ -38,7 +38,7 @@ struct SnapshotFields {  // one snapshot; n particles (n = pressure.size())
   std::span<const double> position, velocity;  // n*dim each, particle-major (x0 y0 [z0] x1 ...)
   std::span<const double> pressure, number_density, density;  // n each
   std::span<const uint8_t> phase, kind;  // n each; kind: 0 fluid, 1 wall, 2 dummy, 3 body
-  std::span<const uint32_t> id;          // n; particle id (stable across snapshots)
+  std::span<const uint64_t> id;          // n; particle id (stable across snapshots)
 };
 
 // What the codes in /kind and /phase stand for, and who wrote the files, stored with every snapshot.
