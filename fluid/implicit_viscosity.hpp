@@ -43,7 +43,6 @@
 // implicit answer on every row: within the solver's tolerance. Non-stiff rows are thereby updated explicitly
 // (u* = u + dt (a + a_visc(u~))) at s_i <= eps, 1/eps inside the explicit stability limit; the stiff rows implicitly
 // as before. Momentum stays exact (the same pair terms, at u~, go both ways).
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <array>
@@ -52,6 +51,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fluid/conjugate_gradient.hpp"
 #include "fluid/domain.hpp"
 #include "fluid/kernel.hpp"
 #include "fluid/neighbor_grid.hpp"
@@ -302,27 +302,37 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
     u.row(r) = P.velocity[i].transpose();
   });
 
-  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
-  cg.setTolerance(tolerance);
-  cg.setMaxIterations(max_iterations);
   // Whether an image enters any row (otherwise every component shares matrix_).
   const bool images = std::any_of(flip_.begin(), flip_.end(), [](std::uint8_t f) { return f != 0; }) ||
                       std::any_of(on_planes_.begin(), on_planes_.end(), [](std::uint8_t f) { return f != 0; }) ||
                       std::any_of(own_image_.begin(), own_image_.end(), [](const auto& o) {
                         return o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0;
                       });
-  if (!images) cg.compute(matrix_);
+  // Each component by conjugate gradients (fluid/conjugate_gradient.hpp): a row's product runs over its columns in id
+  // order, the dot products are exact, so the solution does not depend on the particles' storage or the thread split.
+  std::vector<double> inverse_diagonal(rows), b(rows), x(rows);
   for (int d = 0; d < D; ++d) {
-    if (rhs.col(d).squaredNorm() == 0.0) {
-      u.col(d).setZero();
-      continue;
-    }
-    if (images) cg.compute(matrix_of(d, true));
-    Eigen::VectorXd x = cg.solveWithGuess(rhs.col(d), u.col(d));
-    u.col(d) = x;
-    report.iterations = std::max(report.iterations, static_cast<int>(cg.iterations()));
-    report.residual = std::max(report.residual, cg.error());
-    report.converged = report.converged && cg.info() == Eigen::Success;
+    const Matrix& A = matrix_of(d, images);
+    const double* a = A.valuePtr();
+    const int* col = A.innerIndexPtr();
+    parallel_for(rows, [&](std::size_t r) {
+      const double diagonal = a[diagonal_at_[r]];
+      inverse_diagonal[r] = diagonal != 0.0 ? 1.0 / diagonal : 1.0;
+      b[r] = rhs(static_cast<Eigen::Index>(r), d);
+      x[r] = u(static_cast<Eigen::Index>(r), d);
+    });
+    const auto product = [&](const std::vector<double>& p, std::vector<double>& y) {
+      parallel_for(rows, [&](std::size_t r) {
+        double sum = 0.0;
+        for (int k = row_start_[r]; k < row_start_[r + 1]; ++k) sum += a[k] * p[static_cast<std::size_t>(col[k])];
+        y[r] = sum;
+      });
+    };
+    const ConjugateGradientReport cg = conjugate_gradient(product, inverse_diagonal, b, x, tolerance, max_iterations);
+    parallel_for(rows, [&](std::size_t r) { u(static_cast<Eigen::Index>(r), d) = x[r]; });
+    report.iterations = std::max(report.iterations, cg.iterations);
+    report.residual = std::max(report.residual, cg.error);
+    report.converged = report.converged && cg.converged;
   }
   parallel_for(rows, [&](std::size_t r) { P.velocity[particle_of_[r]] = u.row(r).transpose(); });
   domain.refresh({HaloField::velocity});

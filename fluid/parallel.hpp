@@ -7,6 +7,8 @@
 #include <array>
 #include <cstddef>
 
+#include "fluid/exact_sum.hpp"
+
 namespace slide {
 
 // Loops shorter than this run on one thread: starting a parallel region costs more than they do, and threads that
@@ -61,6 +63,22 @@ std::array<double, K> parallel_max_each(std::size_t n, const std::array<double, 
       if (local[k] > result[k]) result[k] = local[k];
   }
   return result;
+}
+
+// The sum over i of f(i), exact and rounded once (fluid/exact_sum.hpp): each thread sums its indices into its own
+// accumulator and the accumulators are added, which is exact too, so the result does not depend on the split.
+template <class F>
+double parallel_exact_sum(std::size_t n, F&& f) {
+  ExactSum total;
+#pragma omp parallel if (static_cast<long>(n) >= parallel_threshold)
+  {
+    ExactSum local;
+#pragma omp for schedule(dynamic, parallel_chunk) nowait
+    for (long i = 0; i < static_cast<long>(n); ++i) local.add(f(static_cast<std::size_t>(i)));
+#pragma omp critical(slide_parallel_exact_sum)
+    total += local;
+  }
+  return total.value();
 }
 
 inline int thread_count() { return omp_get_max_threads(); }

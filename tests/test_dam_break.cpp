@@ -99,10 +99,16 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
 // (height) and 4.7 (front) standard errors of the difference of 3-run means above the default's effect, below the
 // square lattice's. The largest difference is taken over T (about six independent windows), so a change in
 // round-off could still flip the height's comparison with a chance of a few percent.
+// Issue 32 (neighbour sums in id order, a new realisation of the round-off): one run's scatter about its family's
+// mean is now up to 1.25 % (height) and 0.67 % (front) (standard deviations, 7 runs each, the largest over T), twice
+// stop 27's; 3-run means then gave height 2.55 % and front 1.32 %, 7-run means 1.01 % and 1.30 % (the same 14 runs:
+// measured with `slide run cases/dam_break_gated_2d.yaml` and the sets below). The families are therefore 7 runs
+// each, as stop 27 measured them, not 3: the bound is unchanged, the standard error of the difference of the means
+// about 0.6 % (height) and 0.3 % (front).
 // (Until stop 27 this test compared one free-slip run with the spread of four perturbed no-slip runs about one
 // no-slip run: a comparison of single samples that a change in round-off flipped: the free-slip run's front was
 // 0.93 % from the reference's, the fronts of eight no-slip runs with g perturbed 0.27-0.70 %.)
-// About 2.5 minutes of one core (six runs, each settling for 1 s first). cases/dam_break_gated_2d.yaml at a/40 to
+// About 6 minutes of one core (fourteen runs, each settling for 1 s first). cases/dam_break_gated_2d.yaml at a/40 to
 // T = 3.05.
 TEST(DamBreak, WallSlipMovesTheMeanFrontAndHeightByUnderTwoPercent) {
   const fs::path dir = fresh_directory("dam_break_slip");
@@ -118,10 +124,11 @@ TEST(DamBreak, WallSlipMovesTheMeanFrontAndHeightByUnderTwoPercent) {
     return {smoothed(read_columns(out / "surge_front.csv", "T", "H_over_2a"), T_max, window),
             smoothed(read_columns(out / "surge_front.csv", "T", "Z"), T_max, window)};
   };
-  // Each wall condition's mean over g * (1, 1 + 1e-12, 1 - 1e-12).
+  // Each wall condition's mean over g * (1, 1 +- 1e-12, 1 +- 1e-13, 1 +- 1e-14).
   auto family_mean = [&](const std::string& slip) {
     Smoothed mean;
-    const std::vector<std::string> gs{"9.81", "9.81000000001", "9.80999999999"};
+    const std::vector<std::string> gs{"9.81",           "9.81000000001",   "9.80999999999",  "9.810000000001",
+                                      "9.809999999999", "9.8100000000001", "9.8099999999999"};
     for (const std::string& g : gs) {
       const Smoothed s = run(slip + "_" + g, " --set method.wall_slip=" + slip + " --set gravity=[0,-" + g + "]");
       if (mean.first.empty()) mean = {std::vector<double>(s.first.size()), std::vector<double>(s.second.size())};
@@ -133,7 +140,7 @@ TEST(DamBreak, WallSlipMovesTheMeanFrontAndHeightByUnderTwoPercent) {
   const Smoothed no_slip = family_mean("no_slip"), free_slip = family_mean("free_slip");
   const double height = largest_difference(no_slip.first, free_slip.first, false);
   const double front = largest_difference(no_slip.second, free_slip.second, true);
-  std::printf("dam break a/40, T <= 3, smoothed over Delta T = 0.5, means of 3 runs (g * (1, 1 +-1e-12)): free against "
+  std::printf("dam break a/40, T <= 3, smoothed over Delta T = 0.5, means of 7 runs (g * (1, 1 +-1e-12, -13, -14)): free against "
               "no slip: height %.2f %% of 2a, front %.2f %% of Z\n",
               100 * height, 100 * front);
   EXPECT_LT(height, 0.02);

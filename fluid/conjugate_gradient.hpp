@@ -1,0 +1,73 @@
+#pragma once
+// Conjugate gradients with a diagonal (Jacobi) preconditioner for A x = b, A symmetric positive definite (Hestenes &
+// Stiefel 1952; preconditioned as in Saad 2003, "Iterative Methods for Sparse Linear Systems", Algorithm 9.1), the
+// iteration of Eigen's ConjugateGradient with its stopping rule (|r| <= tolerance |b|), written over two callbacks: the
+// product y = A p, and the dot product. The dot products are exact sums rounded once (parallel_exact_sum,
+// fluid/exact_sum.hpp), so every iterate is the same to the bit however the rows are split among threads (and, combined
+// across processes, among processes): the solve's result does not depend on the split (DESIGN.md, "One domain seam").
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "fluid/parallel.hpp"
+
+namespace slide {
+
+struct ConjugateGradientReport {
+  int iterations = 0;
+  double error = 0.0;  // |b - A x| / |b| at the end (0 for b = 0)
+  bool converged = true;
+};
+
+// Solves A x = b from the guess in x (n = b.size() rows). product(p, y) sets y = A p; inverse_diagonal holds 1 / A_rr
+// (1 where A_rr is 0, as Eigen's DiagonalPreconditioner).
+template <class Product>
+ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<double>& inverse_diagonal,
+                                           const std::vector<double>& b, std::vector<double>& x, double tolerance,
+                                           int max_iterations) {
+  const std::size_t n = b.size();
+  auto dot = [n](const std::vector<double>& u, const std::vector<double>& v) {
+    return parallel_exact_sum(n, [&](std::size_t i) { return u[i] * v[i]; });
+  };
+  ConjugateGradientReport report;
+  const double b_norm2 = dot(b, b);
+  if (b_norm2 == 0.0) {
+    std::fill(x.begin(), x.end(), 0.0);
+    return report;
+  }
+  const double threshold = std::max(tolerance * tolerance * b_norm2, std::numeric_limits<double>::min());
+  std::vector<double> r(n), z(n), p(n), q(n);
+  product(x, q);
+  parallel_for(n, [&](std::size_t i) { r[i] = b[i] - q[i]; });
+  double r_norm2 = dot(r, r);
+  if (r_norm2 < threshold) {
+    report.error = std::sqrt(r_norm2 / b_norm2);
+    return report;
+  }
+  parallel_for(n, [&](std::size_t i) { p[i] = inverse_diagonal[i] * r[i]; });
+  double rz = dot(r, p);
+  int k = 0;
+  while (k < max_iterations) {
+    product(p, q);
+    const double alpha = rz / dot(p, q);
+    parallel_for(n, [&](std::size_t i) {
+      x[i] += alpha * p[i];
+      r[i] -= alpha * q[i];
+    });
+    r_norm2 = dot(r, r);
+    if (r_norm2 < threshold) break;
+    parallel_for(n, [&](std::size_t i) { z[i] = inverse_diagonal[i] * r[i]; });
+    const double rz_old = rz;
+    rz = dot(r, z);
+    const double beta = rz / rz_old;
+    parallel_for(n, [&](std::size_t i) { p[i] = z[i] + beta * p[i]; });
+    ++k;
+  }
+  report.iterations = k;
+  report.error = std::sqrt(r_norm2 / b_norm2);
+  report.converged = report.error <= tolerance;
+  return report;
+}
+
+}  // namespace slide
