@@ -162,6 +162,26 @@ bool clear_of_terrains(const SceneBuild<3>& b, const Vec<3>& p) {
                      [&](const auto& t) { return above_terrain(t.grid, p, 1e-9 * b.dp); });
 }
 
+// Two planes of symmetry across one axis must stand at least two neighbour-search radii apart (the mirror images of
+// each side's particles would otherwise meet the other's, coupling/simulation.cpp): refused here naming the plane and
+// the spacing that would fit, before anything is made.
+void refuse_planes_too_close(const SceneBuild<3>& b) {
+  const auto planes = symmetry_planes(b.r);
+  const double radius_over_dp = b.sim->options.re_over_dp + b.sim->options.skin_over_dp;
+  for (std::size_t k = 0; k < planes.size(); ++k)
+    for (std::size_t l = 0; l < k; ++l) {
+      const MirrorPlane a = planes[l].mirror(), c = planes[k].mirror();
+      const double apart = std::abs(a.at - c.at);
+      if (a.axis != c.axis || apart >= 2.0 * radius_over_dp * b.dp) continue;
+      throw SceneError(planes[k].key,
+                       fmt::format("stands {:.6g} m from the plane of symmetry {} across {}: closer than twice the "
+                                   "neighbour search's radius, 2 (method.kernel_radius + method.neighbor_skin) "
+                                   "particle_spacing = {:.6g} m; particle_spacing {:.6g} m or less fits",
+                                   apart, planes[l].key, "xyz"[c.axis], 2.0 * radius_over_dp * b.dp,
+                                   apart / (2.0 * radius_over_dp)));
+    }
+}
+
 }  // namespace
 
 // Boundary particles of the first phase's density, as in 2-D; a point already placed by an earlier wall (where two
@@ -170,6 +190,7 @@ void build_walls(SceneBuild<3>& b) {
   Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
   std::set<std::tuple<long, long, long>> placed;
+  refuse_planes_too_close(b);
   b.scene->lattice_offset = lattice_offset_for_planes(b);
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
     const auto wn = b.r["walls"][w];

@@ -123,6 +123,24 @@ TEST(Scene3D, RefusesFccPlanesOfSymmetryNotWholePlaneSpacingsApart) {
   EXPECT_EQ(refusal_key(with(fmt::format("{:.17g}", 12 * fcc_plane_spacing(0.01)))), "(accepted)");
 }
 
+// Two planes of symmetry across one axis closer than two neighbour-search radii (the images of one side's particles
+// would reach the other's) are refused before anything is made, naming the second plane and the spacing that fits
+// (before, the solver refused it after the particles were made, naming domain.periodic_x).
+TEST(Scene3D, RefusesPlanesOfSymmetryCloserThanTwoSearchRadii) {
+  const auto with = [](const std::string& max_y) {
+    return std::regex_replace(tank_scene("square"), std::regex("max: \\[0.1, 0.1, 0.2\\]\\}"),
+                              "max: [0.1, " + max_y + ", 0.2], symmetry: [y_min, y_max]}");
+  };
+  try {
+    build_scene<3>(load_scene_text(with("0.03"), {}), "s");
+    ADD_FAILURE() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key_path, "walls[0].symmetry[1]");
+    EXPECT_NE(std::string(e.what()).find("particle_spacing"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(refusal_key(with("0.1")), "(accepted)");
+}
+
 TEST(Scene3D, RefusesWhatIsNot3DNamingTheKey) {
   EXPECT_EQ(refusal_key(tank_scene("square", "gravity: [0, -9.81]\n")), "gravity");
   EXPECT_EQ(refusal_key(tank_scene("hexagonal")), "lattice");
