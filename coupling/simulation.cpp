@@ -99,12 +99,34 @@ void Simulation<D>::initialise() {
     grid_hi[m.axis] = std::max(grid_hi[m.axis], m.at + list_radius());
   }
   grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
+  if (domain_.distributed()) prepare_processes();
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();  // sized by the semi-implicit stage, the only one that uses it
   if (bodies_) bodies_->place_particles(domain_.particles, time_);
   update_neighbors(true);
   compute_pressure();
   update_water_surface();
+}
+
+// Several processes (fluid/domain.hpp): what runs across them today, and the depth of their ghost layers.
+template <int D>
+void Simulation<D>::prepare_processes() {
+  const auto refuse = [](const std::string& what) {
+    throw std::invalid_argument(what + " cannot run on several processes yet: run it on one (without mpirun)");
+  };
+  if (bodies_) refuse("a scene with rigid bodies");
+  if (options.viscous_scheme == ViscousScheme::implicit) refuse("method.viscous_scheme implicit");
+  if (pore_water_) refuse("a scene with pore water under frictional sediment (method.pore_pressure)");
+  // A boundary particle's mirror image lies twice its depth in front of it, and the fluid around the image must be
+  // here (fluid/wall_pressure.hpp, mirror_fill: the cells around the image's cell).
+  const auto& P = domain_.particles;
+  const double deepest = domain_.max_over_owned(0.0, [&](std::size_t i) {
+    return P.kind[i] == Kind::fluid ? 0.0 : P.wall_depth[i];
+  });
+  int reach = 1;
+  if (options.wall_pressure == WallPressure::mirror)
+    reach = 1 + static_cast<int>(std::ceil(2.0 * deepest / grid_.cell_size()));
+  domain_.set_halo_reach(reach);
 }
 
 template <int D>
@@ -140,6 +162,7 @@ void Simulation<D>::update_neighbors(bool force) {
   // Drop the ghosts and bring the real particles back into the period before sorting them.
   domain_.drop_ghosts();
   domain_.bring_inside();
+  domain_.redistribute(grid_);  // several processes: each its own cells' particles
   // Re-sort particles by cell so that neighbours are near each other in memory, then bin and list again. Within a
   // cell by id: every neighbour sum then runs in an order that is the same whatever the particles' storage order
   // (fluid/neighbor_grid.hpp).
@@ -149,7 +172,7 @@ void Simulation<D>::update_neighbors(bool force) {
   if (storage_shuffle_seed_) shuffle_owned_particles();
   // Fresh ghosts behind the sorted real domain_.particles; they are binned and found as neighbours, but need no list of
   // their own (every stage computes real particles only and refreshes the ghosts).
-  if (domain_.make_ghosts(list_radius()) || storage_shuffle_seed_) {
+  if (domain_.make_ghosts(list_radius(), grid_) || storage_shuffle_seed_) {
     scratch_.resize(domain_.particles.size(), Vec<D>::Zero());
     grid_.bin(x, key);
   } else {
@@ -343,25 +366,39 @@ int Simulation<D>::face_crossed(std::size_t i) const {
   return wall_crossing.crossed(position_at_step_start_[i], P.position[i]);
 }
 
-// The crossing of lowest id (whatever the thread count), as an instability.
+// The crossing of lowest id (whatever the thread and process count), as an instability.
 template <int D>
 std::optional<Instability> Simulation<D>::wall_crossing_report() const {
   const auto& P = domain_.particles;
-  const std::size_t n = P.real_count();
-  std::size_t pick = n;
-  for (std::size_t i = 0; i < n; ++i)
-    if (face_crossed(i) >= 0 && (pick == n || P.id[i] < P.id[pick])) pick = i;
-  if (pick == n) return std::nullopt;
-  const WallFace<D>& f = wall_crossing.face(face_crossed(pick));
+  // Where it started and ended, and the face (every process knows the faces).
+  const auto found = domain_.template lowest_id_where<2 * D + 1>(
+      [&](std::size_t i) { return face_crossed(i) >= 0; },
+      [&](std::size_t i) {
+        std::array<double, 2 * D + 1> v;
+        for (int k = 0; k < D; ++k) {
+          v[k] = position_at_step_start_[i][k];
+          v[D + k] = P.position[i][k];
+        }
+        v[2 * D] = face_crossed(i);
+        return v;
+      });
+  if (!found) return std::nullopt;
+  const auto& [id, v] = *found;
+  Vec<D> from, to;
+  for (int k = 0; k < D; ++k) {
+    from[k] = v[k];
+    to[k] = v[D + k];
+  }
+  const WallFace<D>& f = wall_crossing.face(static_cast<int>(v[2 * D]));
   Instability s;
   s.time = time_;
   s.step = step_count_;
-  s.particle = P.id[pick];
-  s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
+  s.particle = id;
+  s.position.assign(to.data(), to.data() + D);
   std::string face;
   for (const Vec<D>& c : f.corner) face += (face.empty() ? "" : " - ") + position_text<D>(c);
   s.reason = fmt::format("passed through a wall: it moved from {} to {} in one step, past the back of the wall face {}",
-                         position_text<D>(position_at_step_start_[pick]), position_text<D>(P.position[pick]), face);
+                         position_text<D>(from), position_text<D>(to), face);
   return s;
 }
 
@@ -630,27 +667,35 @@ std::optional<Instability> Simulation<D>::check() const {
   return problem_report(worst);
 }
 
-// The particle of lowest id with problem code `worst` (independent of the thread count), as an instability.
+// The particle of lowest id with problem code `worst` (independent of the thread and process count), as an
+// instability.
 template <int D>
 Instability Simulation<D>::problem_report(int worst) const {
   const auto& P = domain_.particles;
-  const std::size_t n = P.real_count();
-  std::size_t pick = n;
-  for (std::size_t i = 0; i < n; ++i)
-    if (problem_code(i) == worst && (pick == n || P.id[i] < P.id[pick])) pick = i;
+  const auto found = domain_.template lowest_id_where<D + 2>(
+      [&](std::size_t i) { return problem_code(i) == worst; },
+      [&](std::size_t i) {
+        std::array<double, D + 2> v;
+        for (int k = 0; k < D; ++k) v[k] = P.position[i][k];
+        v[D] = P.number_density[i] / lattice.n0;
+        v[D + 1] = P.velocity[i].norm();
+        return v;
+      });
   Instability s;
   s.time = time_;
   s.step = step_count_;
-  s.particle = P.id[pick];
-  s.position.assign(P.position[pick].data(), P.position[pick].data() + D);
-  const double ratio = P.number_density[pick] / lattice.n0;
+  if (!found) return s;  // not reached: `worst` came from a particle
+  const auto& [id, v] = *found;
+  s.particle = id;
+  s.position.assign(v.begin(), v.begin() + D);
+  const double ratio = v[D];
   switch (worst) {
     case 4: s.reason = "non-finite position, velocity, pressure or number density"; break;
     case 2:
       s.reason = "number-density collapse: n/n0 = " + std::to_string(ratio) + " exceeds checks.max_number_density_ratio";
       break;
     default:
-      s.reason = "speed " + std::to_string(P.velocity[pick].norm()) + " m/s exceeds checks.max_speed_over_c0 * c0";
+      s.reason = "speed " + std::to_string(v[D + 1]) + " m/s exceeds checks.max_speed_over_c0 * c0";
   }
   return s;
 }
@@ -658,6 +703,7 @@ Instability Simulation<D>::problem_report(int worst) const {
 // Periodic: ghosts count (they are the fluid beyond the period's ends), so a point near an end sees all its water.
 template <int D>
 double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
+  if (domain_.distributed()) throw std::logic_error("fluid_number_density_at on several processes (not yet)");
   const auto& P = domain_.particles;
   const double r_e = re();
   double n = 0.0;

@@ -74,6 +74,9 @@ class Simulation {
   Particles<D>& particles() { return domain_.particles; }
   const Particles<D>& particles() const { return domain_.particles; }
   const Domain<D>& domain() const { return domain_; }
+  // The processes this run spans (fluid/communicator.hpp), before initialise(): every process then builds the same
+  // scene and keeps its share at the first rebuild. Not called: one process.
+  void set_communicator(std::shared_ptr<const Communicator> comm) { domain_.set_communicator(std::move(comm)); }
   FluidOptions<D> options;
   // The phases particles refer to (Particles::phase). With any non-Newtonian phase, every fluid particle's viscosity
   // is set from its phase's rheology at the start of each step; empty: viscosities stay as the particles were made.
@@ -178,6 +181,7 @@ class Simulation {
   double list_radius() const { return re() + options.skin_over_dp * options.dp; }
   void check_periodic_setup() const;
   void check_mirror_setup() const;
+  void prepare_processes();
 
   Domain<D> domain_;
   std::shared_ptr<RigidBodies<D>> bodies_;

@@ -4,18 +4,25 @@
 // (owned_count()), then refreshes the fields the next stage reads of its neighbours; the time-step limits, the checks
 // and the largest speed reduce over the owned particles here.
 //
-// Today the ghosts are the periodic images and the mirror images across planes of symmetry (fluid/ghosts.hpp: behind
-// the owned particles in every array, rebuilt with the neighbour list, refreshed between). Particles owned by another process will be a second kind of ghost
-// behind the same calls: refresh() becomes a halo exchange, the reductions combine across processes, and the stages
-// do not change. Maxima are exact in any order; sums over particles are to be taken in an order that does not depend
-// on the split (global ids), so that results stay the same to the bit for any number of threads and processes.
+// One process: the ghosts are the periodic images and the mirror images across planes of symmetry (fluid/ghosts.hpp:
+// behind the owned particles in every array, rebuilt with the neighbour list, refreshed between). Several processes
+// (set_communicator): each owns the particles of its cells of the neighbour grid (fluid/cell_partition.hpp), and the
+// ghosts are every particle and image within reach of them, its own images included (fluid/process_halo.hpp):
+// refresh() is then an exchange, the reductions combine across processes, and the stages do not change. Maxima are
+// exact in any order; sums over particles are exact (fluid/exact_sum.hpp) and neighbour sums run in id order, so
+// results are the same to the bit for any number of threads and processes.
 #include <array>
 #include <cstddef>
 #include <initializer_list>
+#include <limits>
+#include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
+#include "fluid/communicator.hpp"
 #include "fluid/exact_sum.hpp"
+#include "fluid/process_halo.hpp"
 #include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/ghosts.hpp"
@@ -51,6 +58,53 @@ class Domain {
 
   std::size_t owned_count() const { return particles.real_count(); }
 
+  // The processes of the run. Before the first rebuild: every process then holds every particle (the scene as built),
+  // and the first rebuild keeps each process's share. Not set, or one process: a run without MPI.
+  void set_communicator(std::shared_ptr<const Communicator> comm) {
+    comm_ = std::move(comm);
+    replicated_ = distributed();
+  }
+  bool distributed() const { return comm_ && comm_->size() > 1; }
+  const Communicator* communicator() const { return comm_.get(); }
+  // How many cells around its own a process holds ghosts from (fluid/process_halo.hpp): at least one.
+  void set_halo_reach(int cells) { halo_reach_ = std::max(1, cells); }
+  // Repartition when the largest process's share of the particles exceeds the mean by this factor.
+  void set_rebalance_imbalance(double factor) { rebalance_imbalance_ = factor; }
+  long repartitions() const { return repartitions_; }
+
+  // After drop_ghosts and bring_inside, before the re-sort (several processes): the owned particles that moved into
+  // another process's cells go to it; the first time, each process keeps its share of all; when the shares differ by
+  // more than the rebalance factor, the cells are shared anew by their particles and the particles follow.
+  void redistribute(const NeighborGrid<D>& grid) {
+    if (!distributed()) return;
+    if (replicated_) {
+      partition(grid, local_cell_weights(grid), false);
+      halo_.keep_own(particles, grid, comm_->rank());
+      replicated_ = false;
+      return;
+    }
+    halo_.migrate(particles, grid, *comm_);
+    if (imbalance() > rebalance_imbalance_) {
+      std::vector<std::int64_t> weights = local_cell_weights(grid);
+      comm_->sum(weights.data(), weights.size());
+      partition(grid, weights, true);
+      halo_.migrate(particles, grid, *comm_);
+    }
+  }
+  // The largest process's owned particles over the mean (1 for one process).
+  double imbalance() const {
+    if (!distributed()) return 1.0;
+    std::vector<std::int64_t> counts(static_cast<std::size_t>(comm_->size()), 0);
+    counts[static_cast<std::size_t>(comm_->rank())] = static_cast<std::int64_t>(owned_count());
+    comm_->sum(counts.data(), counts.size());
+    std::int64_t total = 0, most = 0;
+    for (const std::int64_t c : counts) {
+      total += c;
+      most = std::max(most, c);
+    }
+    return total == 0 ? 1.0 : double(most) * double(counts.size()) / double(total);
+  }
+
   // The axes (bit a: axis a) of the planes of symmetry that owned particle i lies on (fluid/mirror_plane.hpp, holds,
   // within the last make_ghosts' depth): it is its own image across them, and its velocity across them is zero.
   std::uint8_t planes_holding(std::size_t i) const {
@@ -62,7 +116,7 @@ class Domain {
 
   // Before the owned particles are re-sorted or removed: the ghosts go (every array back to the owned particles).
   void drop_ghosts() {
-    if (layout_.any()) remove_ghosts(particles);
+    if (layout_.any() || distributed()) remove_ghosts(particles);
   }
   // Owned particles that crossed an end of the period come back into it, those that crossed a plane of symmetry come
   // back as their image (no ghosts present).
@@ -72,27 +126,58 @@ class Domain {
   }
   // After a re-sort: ghosts afresh for the owned particles within `depth` (the neighbour list's radius) of the
   // period's ends and the planes of symmetry. Returns whether there are any.
+  // One process: the grid is not needed.
   bool make_ghosts(double depth) {
+    if (distributed()) throw std::logic_error("Domain::make_ghosts: several processes need the grid");
+    return make_ghosts(depth, NeighborGrid<D>());
+  }
+  bool make_ghosts(double depth, const NeighborGrid<D>& grid) {
     ghost_depth_ = depth;
+    if (distributed()) {
+      halo_.make_ghosts(particles, grid, layout_, depth, *comm_);
+      return true;
+    }
     if (layout_.any()) add_ghosts(particles, layout_, depth);
     return particles.ghost_count() != 0;
   }
 
   // The owned particles' `fields` carried to their ghosts: what the next stage reads of its neighbours.
   void refresh(std::initializer_list<HaloField> fields) {
-    if (particles.ghost_count() == 0) return;
+    if (particles.ghost_count() == 0 && !distributed()) return;
     for (const HaloField f : fields) refresh(f);
   }
 
   // The largest f(i) over the owned particles, from `init` (exact: max does not depend on the order).
   template <class F>
   double max_over_owned(double init, F&& f) const {
-    return parallel_max(owned_count(), init, f);
+    double m = parallel_max(owned_count(), init, f);
+    if (distributed()) comm_->max(&m, 1);
+    return m;
   }
   // Several maxima in one pass (component k of f(i) into component k).
   template <std::size_t K, class F>
   std::array<double, K> max_each_over_owned(const std::array<double, K>& init, F&& f) const {
-    return parallel_max_each<K>(owned_count(), init, f);
+    std::array<double, K> m = parallel_max_each<K>(owned_count(), init, f);
+    if (distributed()) comm_->max(m.data(), K);
+    return m;
+  }
+  // The owned particle of lowest id over all processes for which pick(i) holds, with values(i) (K numbers), the same
+  // on every process; nothing where none holds anywhere.
+  template <std::size_t K, class Pick, class Values>
+  std::optional<std::pair<ParticleId, std::array<double, K>>> lowest_id_where(Pick&& pick, Values&& values) const {
+    const auto& P = particles;
+    std::size_t best = owned_count();
+    for (std::size_t i = 0; i < owned_count(); ++i)
+      if (pick(i) && (best == owned_count() || P.id[i] < P.id[best])) best = i;
+    std::int64_t negated = best < owned_count() ? -static_cast<std::int64_t>(P.id[best]) : INT64_MIN;
+    if (distributed()) comm_->max(&negated, 1);
+    if (negated == INT64_MIN) return std::nullopt;
+    const auto id = static_cast<ParticleId>(-negated);
+    std::array<double, K> v;
+    v.fill(-std::numeric_limits<double>::infinity());
+    if (best < owned_count() && P.id[best] == id) v = values(best);
+    if (distributed()) comm_->max(v.data(), K);
+    return std::pair{id, v};
   }
   // Sums by group over the owned particles (a rigid body's force and torque over its boundary particles): entry g
   // of the result is the sum of values(i) over every owned i with group_of(i) == g (component by component; i with
@@ -108,6 +193,22 @@ class Domain {
       for (std::size_t k = 0; k < K; ++k) sums[static_cast<std::size_t>(g)][k].add(v[k]);
     }
     std::vector<std::array<double, K>> out(groups);
+    if (distributed()) {  // the digits of every process's partial sums, summed: exact, whatever the split
+      constexpr std::size_t n = ExactSum::digit_count;
+      std::vector<std::int64_t> digits(groups * K * n);
+      for (std::size_t g = 0; g < groups; ++g)
+        for (std::size_t k = 0; k < K; ++k) {
+          const auto& d = sums[g][k].normalised_digits();
+          std::copy(d.begin(), d.end(), digits.begin() + static_cast<std::ptrdiff_t>((g * K + k) * n));
+        }
+      comm_->sum(digits.data(), digits.size());
+      for (std::size_t g = 0; g < groups; ++g)
+        for (std::size_t k = 0; k < K; ++k) {
+          std::array<std::int64_t, n> d;
+          std::copy_n(digits.begin() + static_cast<std::ptrdiff_t>((g * K + k) * n), n, d.begin());
+          sums[g][k] = ExactSum::from_digits(d);
+        }
+    }
     for (std::size_t g = 0; g < groups; ++g)
       for (std::size_t k = 0; k < K; ++k) out[g][k] = sums[g][k].value();
     return out;
@@ -116,6 +217,10 @@ class Domain {
  private:
   void refresh(HaloField f) {
     auto& P = particles;
+    if (distributed()) {
+      refresh_across_processes(f);
+      return;
+    }
     switch (f) {
       case HaloField::motion:
         hold_on_planes(P, layout_.mirrors, ghost_depth_);  // before its images are placed from it
@@ -132,8 +237,43 @@ class Domain {
     }
   }
 
+  void refresh_across_processes(HaloField f) {
+    auto& P = particles;
+    const Communicator& c = *comm_;
+    switch (f) {
+      case HaloField::motion:
+        hold_on_planes(P, layout_.mirrors, ghost_depth_);
+        halo_.refresh_motion(P, c);
+        return;
+      case HaloField::velocity: halo_.refresh(P, P.velocity, c); return;
+      case HaloField::number_density: halo_.refresh(P, P.number_density, c); return;
+      case HaloField::pressure: halo_.refresh(P, P.pressure, c); return;
+      case HaloField::gradient_correction: halo_.refresh(P, P.gradient_correction, c); return;
+      case HaloField::viscosity: halo_.refresh(P, P.viscosity, c); return;
+      case HaloField::wall_fraction: halo_.refresh(P, P.wall_fraction, c); return;
+      case HaloField::wall_fill: halo_.refresh(P, P.wall_fill, c); return;
+      case HaloField::wall_normal: halo_.refresh(P, P.wall_normal, c); return;
+    }
+  }
+  // This process's owned particles per cell of the grid.
+  std::vector<std::int64_t> local_cell_weights(const NeighborGrid<D>& grid) const {
+    std::vector<std::int64_t> w(grid.total_cells(), 0);
+    for (std::size_t i = 0; i < owned_count(); ++i) ++w[grid.linear(grid.cell_of(particles.position[i]))];
+    return w;
+  }
+  void partition(const NeighborGrid<D>& grid, const std::vector<std::int64_t>& weights, bool again) {
+    halo_.set_partition(CellPartition<D>(grid.cells(), weights, comm_->size()), grid, halo_reach_);
+    if (again) ++repartitions_;
+  }
+
   GhostLayout layout_;
   double ghost_depth_ = 0.0;  // the depth of the last make_ghosts
+  std::shared_ptr<const Communicator> comm_;
+  ProcessHalo<D> halo_;
+  bool replicated_ = false;  // every process holds every particle (before the first rebuild)
+  int halo_reach_ = 1;
+  double rebalance_imbalance_ = 1.25;
+  long repartitions_ = 0;
 };
 
 }  // namespace slide

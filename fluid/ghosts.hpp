@@ -11,8 +11,8 @@
 // real_count()). Ghost g is the image of real particle s = ghost_source[g]: its position is the source's with the
 // components along the axes in ghost_flip[g] negated, plus ghost_offset[g] (a periodic shift L e_x; a mirror across
 // x[a] = c: -x[a] + 2 c); its vectors (velocity, acceleration, wall normal) are the source's with those components
-// negated, its corrective matrix L(a, b) times the signs of a and b; every other array is the source's, and its id is
-// id_end() + g. On every neighbour-list rebuild the simulation (coupling/simulation.cpp through fluid/domain.hpp)
+// negated, its corrective matrix L(a, b) times the signs of a and b; every other array is the source's, its id
+// included. On every neighbour-list rebuild the simulation (coupling/simulation.cpp through fluid/domain.hpp)
 // removes them, brings the real particles back into the domain (wrapped into the period, reflected back across a
 // plane), re-sorts the real particles and creates them afresh (add_ghosts); between rebuilds it copies into them what
 // each stage changes that neighbours read (sync_ghost_motion after a move, copy_to_ghosts for one array). A real
@@ -74,11 +74,11 @@ void remove_ghosts(Particles<D>& P) {
   P.ghost_offset.clear();
 }
 
-// Copies every array of each ghost's source into the ghost, then takes the image of its position and vectors and
-// gives it its own id.
+// Copies every array of each ghost's source into the ghost (its id too), then takes the image of its position and
+// vectors.
 template <int D>
 void sync_ghosts(Particles<D>& P) {
-  const std::size_t r = P.real_count(), first_ghost_id = P.id_end();
+  const std::size_t r = P.real_count();
   parallel_for(P.ghost_count(), [&](std::size_t g) {
     const std::size_t s = P.ghost_source[g], t = r + g;
     P.for_each_array([&](auto& v) { v[t] = v[s]; });
@@ -89,7 +89,6 @@ void sync_ghosts(Particles<D>& P) {
       P.acceleration[t] = image_vector<D>(P.acceleration[s], flip);
       P.wall_normal[t] = image_vector<D>(P.wall_normal[s], flip);
     }
-    P.id[t] = static_cast<ParticleId>(first_ghost_id + g);
   });
 }
 

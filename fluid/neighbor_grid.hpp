@@ -31,6 +31,8 @@ class NeighborGrid {
   }
 
   double cell_size() const { return cell_size_; }
+  const std::array<int, D>& cells() const { return cells_; }  // along each axis
+  std::size_t total_cells() const { return total_cells_; }
 
   // Cell coordinates of x; points outside the box are put in the nearest edge cell (the caller checks the domain).
   std::array<int, D> cell_of(const Vec<D>& x) const {

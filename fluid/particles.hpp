@@ -72,32 +72,37 @@ struct Particles {
     body_frames.normal.push_back(normal);
   }
 
-  // Ghosts (fluid/ghosts.hpp: periodic and mirror images). The arrays above hold the real particles first, then
-  // ghost_source.size() ghosts: ghost g, at index real_count() + g, is an image of real particle ghost_source[g],
+  // Ghosts (fluid/ghosts.hpp: periodic and mirror images; fluid/process_halo.hpp: other processes' particles). The
+  // arrays above hold the real (owned) particles first, then ghost_flip.size() ghosts: ghost g, at index
+  // real_count() + g, is an image of a real particle (ghost_source[g] here, or remote_source: owned by another process),
   // equal to it in every array except that its position is the source's with the components along the axes in the
-  // bits of ghost_flip[g] negated, plus ghost_offset[g], its vectors are negated along those axes too, and its id is
-  // id_end() + g (real ids are creation indices below id_end(), so they never collide). Removing the ghosts truncates
-  // the arrays. Without periodic ends or planes of symmetry there are none and real_count() == size().
+  // bits of ghost_flip[g] negated, plus ghost_offset[g], and its vectors are negated along those axes too; its id is
+  // its source's (the order key tells them apart). Removing the ghosts truncates the arrays. Without periodic ends,
+  // planes of symmetry or other processes there are none and real_count() == size().
+  static constexpr std::uint32_t remote_source = 0xffffffffu;
   std::vector<std::uint32_t> ghost_source;
   std::vector<std::uint8_t> ghost_flip;
   std::vector<Vec<D>> ghost_offset;
   // Particles taken out of a run (remove_keeping_ids: they left the domain) since the ids were last made dense. The
-  // real ids lie in 0 .. real_count() + removed_count - 1, so ghosts take ids from there on.
+  // real ids lie in 0 .. real_count() + removed_count - 1 (one process: the run's own).
   std::size_t removed_count = 0;
   std::size_t id_end() const { return real_count() + removed_count; }
 
   std::size_t size() const { return position.size(); }
-  std::size_t ghost_count() const { return ghost_source.size(); }
-  std::size_t real_count() const { return size() - ghost_source.size(); }
-  // The real particle that index j stands for: j itself, or a ghost's source.
+  std::size_t ghost_count() const { return ghost_flip.size(); }
+  std::size_t real_count() const { return size() - ghost_flip.size(); }
+  // The real particle that index j stands for: j itself, or a ghost's source (on this process: not for a ghost of
+  // another process's particle).
   std::size_t real_index(std::size_t j) const {
     const std::size_t r = real_count();
     return j < r ? j : ghost_source[j - r];
   }
 
   // Where particle j comes among the particles of its cell (fluid/neighbor_grid.hpp, bin with a key), and so in every
-  // neighbour sum: a real particle by its id, a ghost after its source, by which image it is (its flip, and its
-  // periodic shift's sign where x is not flipped). Distinct for distinct particles while ids stay below 2^59.
+  // neighbour sum: a particle by its id, an image after its source, by which image it is (its flip, and its periodic
+  // shift's sign where x is not flipped). Another process's particle, a ghost that is no image (no flip, no shift),
+  // comes where it would as a real particle: the order is the same for any split. Distinct for distinct particles
+  // while ids stay below 2^59.
   std::uint64_t order_key(std::size_t j) const {
     const std::size_t r = real_count();
     if (j < r) return id[j] << 5;
@@ -105,7 +110,8 @@ struct Particles {
     const unsigned flip = ghost_flip[g];
     const double shift = (flip & 1u) ? 0.0 : ghost_offset[g][0];
     const unsigned periodic = shift > 0.0 ? 1u : shift < 0.0 ? 2u : 0u;
-    return id[ghost_source[g]] << 5 | (1u + flip + 8u * periodic);
+    if (flip == 0 && periodic == 0) return id[j] << 5;
+    return id[j] << 5 | (1u + flip + 8u * periodic);
   }
 
   // Calls f(array) for every per-particle array (each of length size()): the one list of them, so that re-sorting,
@@ -128,9 +134,13 @@ struct Particles {
     f(wall_fill);
     f(body_frame);
   }
+  template <class F>
+  void for_each_array(F&& f) const {
+    const_cast<Particles*>(this)->for_each_array([&](auto& v) { f(static_cast<const std::decay_t<decltype(v)>&>(v)); });
+  }
 
   std::size_t add(const Vec<D>& x, Kind k, std::uint8_t phase_index, double rho, double mu) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::add with ghosts present");
+    if (!ghost_flip.empty()) throw std::logic_error("Particles::add with ghosts present");
     const std::size_t i = size();
     position.push_back(x);
     velocity.push_back(Vec<D>::Zero());
@@ -155,7 +165,7 @@ struct Particles {
   // allocates nothing: a new array per quantity at every re-sort had left the heap fragmented, 40 bytes a particle
   // of resident size in the bench case's first 0.05 s (measured against a fixed mmap threshold).
   void reorder(const std::vector<std::uint32_t>& order, std::vector<Vec<D>>& buffer) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::reorder with ghosts present");
+    if (!ghost_flip.empty()) throw std::logic_error("Particles::reorder with ghosts present");
     if (buffer.size() < size()) buffer.resize(size());
     for_each_array([&](auto& v) { permute_through(v, order, buffer); });
   }
@@ -164,7 +174,7 @@ struct Particles {
   // others in their order and their ids (a particle's id names it in every snapshot of a run).
   template <class Drop>
   void remove_keeping_ids(Drop drop) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_keeping_ids with ghosts present");
+    if (!ghost_flip.empty()) throw std::logic_error("Particles::remove_keeping_ids with ghosts present");
     std::vector<std::uint32_t> keep;
     for (std::size_t i = 0; i < size(); ++i)
       if (!drop(i)) keep.push_back(static_cast<std::uint32_t>(i));
@@ -179,7 +189,7 @@ struct Particles {
   // others in their order, and renumbers the ids 0 .. size() - 1 in their former order, so ids stay creation ranks.
   template <class Drop>
   void remove_if(Drop drop) {
-    if (!ghost_source.empty()) throw std::logic_error("Particles::remove_if with ghosts present");
+    if (!ghost_flip.empty()) throw std::logic_error("Particles::remove_if with ghosts present");
     std::vector<std::uint32_t> keep;
     for (std::size_t i = 0; i < size(); ++i)
       if (!drop(i)) keep.push_back(static_cast<std::uint32_t>(i));

@@ -15,8 +15,9 @@ namespace {
 constexpr char kMagic[8] = {'S', 'L', 'I', 'D', 'E', 'C', 'K', 'P'};
 // 2: body particles' frames in a table of their own (stop 25); 3: slide_shapes.csv; 4: the header says whether it was
 // taken while settling (issue 30); 5: ghosts as a flip and an offset (mirror images, stop 42); 6: the rigid journal's
-// solids say whether they are kinematic (3-D prescribed motion, stop 43); 7: particle ids are 64-bit (issue 32).
-constexpr std::uint32_t kFormat = 7;
+// solids say whether they are kinematic (3-D prescribed motion, stop 43); 7: particle ids are 64-bit (issue 32); 8: a
+// ghost carries its source's id (issue 32).
+constexpr std::uint32_t kFormat = 8;
 
 // FNV-1a, 64 bits: enough to tell a torn or altered file, not a guard against tampering.
 std::uint64_t fnv1a(const char* data, std::size_t n) {

@@ -4,7 +4,11 @@
 #include <cstdlib>
 #include <iostream>
 
+#include <memory>
+#include <optional>
+
 #include "cases/particle_budget.hpp"
+#include "mpi/mpi_communicator.hpp"
 #include "cases/scene.hpp"
 #include "tools/report.hpp"
 #include "tools/run_driver.hpp"
@@ -107,9 +111,22 @@ int run_main(int argc, char** argv) {
 
 // Nothing escapes: whatever a command did not expect ends the process with exit 1 and one line (a run in its step
 // loop has already written its last good state and run.json by then: tools/run_driver.cpp).
+//
+// Started by mpirun (or srun), the program starts MPI (mpi/mpi_communicator.hpp). One process runs as without it; on
+// several, the commands do not run yet (the step loop does: tests/mpi/, but the outputs, bodies and the implicit solve
+// do not), and each process would otherwise run the whole scene into the same folder: exit 2, nothing written.
 int main(int argc, char** argv) {
   slide::cases::program_resident_bytes();  // the program's own memory, taken before any scene (particle_budget.hpp)
   try {
+    std::optional<slide::mpi::MpiSession> mpi;
+    if (slide::mpi::launched_by_mpi()) mpi.emplace(argc, argv);
+    if (mpi && mpi->world()->size() > 1) {
+      if (mpi->world()->rank() == 0)
+        std::cerr << "slide: started on " << mpi->world()->size()
+                  << " processes (mpirun -np): runs on several processes are not available yet; start slide on one "
+                     "process (without mpirun, or -np 1) and give it threads (--threads)\n";
+      return 2;
+    }
     return run_main(argc, argv);
   } catch (const std::exception& e) {
     std::cerr << "slide: error: " << e.what() << "\n";

@@ -1,0 +1,36 @@
+#pragma once
+// MPI's communicator behind slide's Communicator (fluid/communicator.hpp), and the life of MPI in one program: only
+// this folder includes mpi.h.
+//
+// A program started by mpirun (or srun) finds its launcher's variables in the environment (launched_by_mpi) and
+// starts MPI (MpiSession); a program started alone does not touch MPI and runs as today's single process. MPI is
+// called only from the thread that started it, outside parallel regions (MPI_THREAD_FUNNELED).
+#include <memory>
+#include <string>
+
+#include "fluid/communicator.hpp"
+
+namespace slide::mpi {
+
+// Whether a launcher (Open MPI's mpirun, PMIx, Slurm's srun with PMI) started this process.
+bool launched_by_mpi();
+
+// MPI started on construction and finished on destruction (all processes together); world() is then every process
+// of the run.
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  std::shared_ptr<const Communicator> world() const { return world_; }
+
+ private:
+  std::shared_ptr<const Communicator> world_;
+};
+
+// Stops every process of the run at once with `code` as the run's exit status (one process failed: the others may be
+// waiting for it in a collective call and would wait for ever).
+[[noreturn]] void abort_all(int code);
+
+}  // namespace slide::mpi
