@@ -269,7 +269,8 @@ TEST(Periodic, GhostsAreTheExpectedImages) {
     EXPECT_EQ(P.wall_normal[t], P.wall_normal[s]);
     EXPECT_EQ(P.wall_depth[t], P.wall_depth[s]);
     EXPECT_EQ(P.wall_fill[t], P.wall_fill[s]);
-    EXPECT_EQ(P.id[t], t);  // no collision with the real ids 0 .. real - 1
+    EXPECT_EQ(P.id[t], P.id[s]);  // its source's: the order key tells them apart
+    EXPECT_NE(P.order_key(t), P.order_key(s));
     EXPECT_EQ(P.real_index(t), s);
   }
   EXPECT_THROW(P.add(Vec<2>::Zero(), Kind::fluid, 0, 1000.0, 1e-3), std::logic_error);
