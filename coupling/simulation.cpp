@@ -424,7 +424,8 @@ void Simulation<D>::remove_particles_that_left() {
   std::vector<std::size_t> leaving;
   for (std::size_t i = 0; i < n; ++i)
     if (outside_domain(i)) leaving.push_back(i);
-  if (leaving.empty()) return;
+  // Several processes: every one rebuilds (a collective), whether any of its own left or not.
+  if (leaving.empty() && !domain_.distributed()) return;
   std::sort(leaving.begin(), leaving.end(), [&](std::size_t a, std::size_t b) { return P.id[a] < P.id[b]; });
   for (const std::size_t i : leaving)
     left_the_domain_.push_back({P.id[i], time_, std::vector<double>(P.position[i].data(), P.position[i].data() + D)});

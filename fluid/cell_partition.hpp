@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -65,17 +66,41 @@ class CellPartition {
     return v;
   }
 
-  // Processes [first, last) share the box [lo, hi), which has at least last - first cells.
+  // Processes [first, last) share the box [lo, hi), which has at least last - first cells. Half of them (the first
+  // (last - first) / 2) on one side of a cut across its longest axis; where no cut there leaves each side a cell per
+  // process, across the next longest; and where no axis has one, the processes are split unevenly (one more, one
+  // fewer on the first side, and so on), each side's weight in proportion.
   void bisect(const std::array<int, D>& lo, const std::array<int, D>& hi, int first, int last,
               const std::vector<std::int64_t>& weight) {
     if (last - first == 1) {
       for_each_cell(lo, hi, [&](const std::array<int, D>& c) { owner_[linear(c)] = first; });
       return;
     }
-    int axis = 0;
-    for (int k = 1; k < D; ++k)
-      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-    const int left = (last - first) / 2, right = last - first - left;
+    std::array<int, D> axes;
+    for (int k = 0; k < D; ++k) axes[k] = k;
+    std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+    const int n = last - first;
+    for (int step = 0; step < 2 * n; ++step) {
+      const int left = n / 2 + (step % 2 == 0 ? step / 2 : -(step + 1) / 2);
+      if (left < 1 || left >= n) continue;
+      for (const int axis : axes) {
+        const int cut = best_cut(lo, hi, axis, left, n - left, weight);
+        if (cut < 0) continue;
+        std::array<int, D> mid_hi = hi, mid_lo = lo;
+        mid_hi[axis] = mid_lo[axis] = lo[axis] + cut;
+        bisect(lo, mid_hi, first, first + left, weight);
+        bisect(mid_lo, hi, first + left, last, weight);
+        return;
+      }
+    }
+    throw std::invalid_argument("the neighbour grid's cells cannot be shared among " + std::to_string(last - first) +
+                                " processes: use fewer processes");
+  }
+
+  // The cut across `axis` (slabs from lo[axis], -1 if none) whose weight before it is nearest left/(left + right) of
+  // the box's, among those that leave each side at least as many cells as processes (the lowest on a tie).
+  int best_cut(const std::array<int, D>& lo, const std::array<int, D>& hi, int axis, int left, int right,
+               const std::vector<std::int64_t>& weight) const {
     // The weight of each slab of the box across `axis`: its particles, and a 1/1024 of one for each cell, so that
     // empty regions are shared too, without weighing much against particles.
     std::vector<std::int64_t> slab(static_cast<std::size_t>(hi[axis] - lo[axis]), 0);
@@ -85,8 +110,6 @@ class CellPartition {
     std::int64_t total = 0;
     for (const std::int64_t w : slab) total += w;
     const std::size_t across = volume(lo, hi) / slab.size();  // cells in one slab
-    // The cut: the slab boundary whose weight before it is nearest left/(left + right) of the total, among those that
-    // leave each side at least as many cells as processes (the lowest such boundary on a tie).
     int best = -1;
     std::int64_t best_distance = 0, before = 0;
     for (int s = 1; s < static_cast<int>(slab.size()); ++s) {
@@ -101,14 +124,7 @@ class CellPartition {
         best_distance = distance;
       }
     }
-    if (best < 0)
-      throw std::invalid_argument("the neighbour grid's cells cannot be shared among " +
-                                  std::to_string(last - first) + " processes: use fewer processes");
-    std::array<int, D> mid_hi = hi, mid_lo = lo;
-    mid_hi[axis] = lo[axis] + best;
-    mid_lo[axis] = lo[axis] + best;
-    bisect(lo, mid_hi, first, first + left, weight);
-    bisect(mid_lo, hi, first + left, last, weight);
+    return best;
   }
 
   std::array<int, D> cells_{};

@@ -13,6 +13,7 @@
 // results are the same to the bit for any number of threads and processes.
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <memory>
@@ -81,14 +82,18 @@ class Domain {
       partition(grid, local_cell_weights(grid), false);
       halo_.keep_own(particles, grid, comm_->rank());
       replicated_ = false;
+      imbalance_after_partition_ = imbalance();
       return;
     }
     halo_.migrate(particles, grid, *comm_);
-    if (imbalance() > rebalance_imbalance_) {
+    // Shared anew when the shares differ by more than the factor, and by a tenth more than right after the last
+    // partition: a partition of whole cells may not reach the factor, and would otherwise be redone at every re-sort.
+    if (imbalance() > std::max(rebalance_imbalance_, 1.1 * imbalance_after_partition_)) {
       std::vector<std::int64_t> weights = local_cell_weights(grid);
       comm_->sum(weights.data(), weights.size());
       partition(grid, weights, true);
       halo_.migrate(particles, grid, *comm_);
+      imbalance_after_partition_ = imbalance();
     }
   }
   // The largest process's owned particles over the mean (1 for one process).
@@ -173,10 +178,15 @@ class Domain {
     if (distributed()) comm_->max(&negated, 1);
     if (negated == INT64_MIN) return std::nullopt;
     const auto id = static_cast<ParticleId>(-negated);
-    std::array<double, K> v;
-    v.fill(-std::numeric_limits<double>::infinity());
+    // Its owner's values as bit patterns, every other process's zero, summed: exact, NaN and infinities included.
+    std::array<double, K> v{};
     if (best < owned_count() && P.id[best] == id) v = values(best);
-    if (distributed()) comm_->max(v.data(), K);
+    if (distributed()) {
+      std::array<std::int64_t, K> bits;
+      std::memcpy(bits.data(), v.data(), sizeof(v));
+      comm_->sum(bits.data(), K);
+      std::memcpy(v.data(), bits.data(), sizeof(v));
+    }
     return std::pair{id, v};
   }
   // Sums by group over the owned particles (a rigid body's force and torque over its boundary particles): entry g
@@ -273,6 +283,7 @@ class Domain {
   bool replicated_ = false;  // every process holds every particle (before the first rebuild)
   int halo_reach_ = 1;
   double rebalance_imbalance_ = 1.25;
+  double imbalance_after_partition_ = 1.0;
   long repartitions_ = 0;
 };
 

@@ -95,7 +95,10 @@ struct Particles {
   // another process's particle).
   std::size_t real_index(std::size_t j) const {
     const std::size_t r = real_count();
-    return j < r ? j : ghost_source[j - r];
+    if (j < r) return j;
+    const std::uint32_t s = ghost_source[j - r];
+    if (s == remote_source) throw std::logic_error("real_index of another process's particle");
+    return s;
   }
 
   // Where particle j comes among the particles of its cell (fluid/neighbor_grid.hpp, bin with a key), and so in every

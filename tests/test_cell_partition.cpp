@@ -2,6 +2,7 @@
 // partitions worked out by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -35,6 +36,15 @@ TEST(CellPartition, ThreeProcessesShareByWeightIn3D) {
   std::vector<std::int64_t> w(6 * 1 * 1, 7);  // a row of 6 along x
   const CellPartition<3> p({6, 1, 1}, w, 3);
   EXPECT_EQ(p.owners(), (std::vector<int>{0, 0, 1, 1, 2, 2}));
+}
+
+// 3 x 3 cells on 9 processes: no cut across x or y leaves 4 and 5 processes a cell each (columns of 3 cells); split
+// 3 and 6 instead, every process still gets one cell.
+TEST(CellPartition, AsManyProcessesAsCellsGetOneCellEach) {
+  const CellPartition<2> p({3, 3}, std::vector<std::int64_t>(9, 1), 9);
+  std::vector<int> owners = p.owners();
+  std::sort(owners.begin(), owners.end());
+  EXPECT_EQ(owners, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
 }
 
 TEST(CellPartition, MoreProcessesThanCellsAreRefused) {
