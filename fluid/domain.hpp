@@ -12,6 +12,7 @@
 // exact in any order; sums over particles are exact (fluid/exact_sum.hpp) and neighbour sums run in id order, so
 // results are the same to the bit for any number of threads and processes.
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstring>
 #include <initializer_list>
@@ -46,6 +47,15 @@ enum class HaloField {
   wall_normal
 };
 
+// What the exchanges between processes cost so far (tools/bench --mpi): seconds in them on this process (waiting for
+// the others included), and bytes this process sent to others.
+struct CommunicationCost {
+  double halo_seconds = 0.0;          // refreshing the ghosts' fields between re-sorts
+  double rebuild_seconds = 0.0;       // at re-sorts: migration, repartitioning, new ghosts
+  double reduction_seconds = 0.0;     // maxima and sums across processes
+  double bytes_sent = 0.0;
+};
+
 template <int D>
 class Domain {
  public:
@@ -72,12 +82,14 @@ class Domain {
   // Repartition when the largest process's share of the particles exceeds the mean by this factor.
   void set_rebalance_imbalance(double factor) { rebalance_imbalance_ = factor; }
   long repartitions() const { return repartitions_; }
+  const CommunicationCost& communication_cost() const { return cost_; }
 
   // After drop_ghosts and bring_inside, before the re-sort (several processes): the owned particles that moved into
   // another process's cells go to it; the first time, each process keeps its share of all; when the shares differ by
   // more than the rebalance factor, the cells are shared anew by their particles and the particles follow.
   void redistribute(const NeighborGrid<D>& grid) {
     if (!distributed()) return;
+    const Stopwatch watch(cost_.rebuild_seconds);
     if (replicated_) {
       partition(grid, local_cell_weights(grid), false);
       halo_.keep_own(particles, grid, comm_->rank());
@@ -139,7 +151,9 @@ class Domain {
   bool make_ghosts(double depth, const NeighborGrid<D>& grid) {
     ghost_depth_ = depth;
     if (distributed()) {
+      const Stopwatch watch(cost_.rebuild_seconds);
       halo_.make_ghosts(particles, grid, layout_, depth, *comm_);
+      cost_.bytes_sent = double(halo_.bytes_sent());
       return true;
     }
     if (layout_.any()) add_ghosts(particles, layout_, depth);
@@ -156,14 +170,20 @@ class Domain {
   template <class F>
   double max_over_owned(double init, F&& f) const {
     double m = parallel_max(owned_count(), init, f);
-    if (distributed()) comm_->max(&m, 1);
+    if (distributed()) {
+      const Stopwatch watch(cost_.reduction_seconds);
+      comm_->max(&m, 1);
+    }
     return m;
   }
   // Several maxima in one pass (component k of f(i) into component k).
   template <std::size_t K, class F>
   std::array<double, K> max_each_over_owned(const std::array<double, K>& init, F&& f) const {
     std::array<double, K> m = parallel_max_each<K>(owned_count(), init, f);
-    if (distributed()) comm_->max(m.data(), K);
+    if (distributed()) {
+      const Stopwatch watch(cost_.reduction_seconds);
+      comm_->max(m.data(), K);
+    }
     return m;
   }
   // The owned particle of lowest id over all processes for which pick(i) holds, with values(i) (K numbers), the same
@@ -248,6 +268,11 @@ class Domain {
   }
 
   void refresh_across_processes(HaloField f) {
+    const Stopwatch watch(cost_.halo_seconds);
+    refresh_fields_across_processes(f);
+    cost_.bytes_sent = double(halo_.bytes_sent());
+  }
+  void refresh_fields_across_processes(HaloField f) {
     auto& P = particles;
     const Communicator& c = *comm_;
     switch (f) {
@@ -276,8 +301,20 @@ class Domain {
     if (again) ++repartitions_;
   }
 
+  // Adds the seconds of its scope to a total (const members time their reductions: the total is mutable).
+  class Stopwatch {
+   public:
+    explicit Stopwatch(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+    ~Stopwatch() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+   private:
+    double& total_;
+    std::chrono::steady_clock::time_point start_;
+  };
+
   GhostLayout layout_;
   double ghost_depth_ = 0.0;  // the depth of the last make_ghosts
+  mutable CommunicationCost cost_;
   std::shared_ptr<const Communicator> comm_;
   ProcessHalo<D> halo_;
   bool replicated_ = false;  // every process holds every particle (before the first rebuild)

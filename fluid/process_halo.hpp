@@ -193,13 +193,8 @@ class ProcessHalo {
     }
   }
 
-  // Bytes sent to other processes by the last refreshes since asked (tools/bench --mpi).
-  std::size_t ghost_entries_sent(int self) const {
-    std::size_t n = 0;
-    for (std::size_t r = 0; r < send_.size(); ++r)
-      if (static_cast<int>(r) != self) n += send_[r].size();
-    return n;
-  }
+  // Bytes sent to other processes so far (tools/bench --mpi).
+  std::size_t bytes_sent() const { return bytes_sent_; }
 
  private:
   template <class F>
@@ -243,13 +238,14 @@ class ProcessHalo {
     P.acceleration[t] = image_vector<D>(P.acceleration[t], flip);
     P.wall_normal[t] = image_vector<D>(P.wall_normal[t], flip);
   }
-  static std::vector<unsigned char> exchange(const std::vector<std::vector<unsigned char>>& out,
-                                             const Communicator& comm, std::vector<std::size_t>& received_bytes) {
+  std::vector<unsigned char> exchange(const std::vector<std::vector<unsigned char>>& out, const Communicator& comm,
+                                      std::vector<std::size_t>& received_bytes) const {
     std::vector<unsigned char> send;
     std::vector<std::size_t> send_bytes(out.size());
     for (std::size_t r = 0; r < out.size(); ++r) {
       send_bytes[r] = out[r].size();
       send.insert(send.end(), out[r].begin(), out[r].end());
+      if (static_cast<int>(r) != comm.rank()) bytes_sent_ += out[r].size();
     }
     return comm.exchange(send, send_bytes, received_bytes);
   }
@@ -259,6 +255,7 @@ class ProcessHalo {
   std::vector<int> needers_;
   std::vector<std::vector<std::uint32_t>> send_;  // per process: the owned particles whose values it receives, in order
   std::vector<std::size_t> received_;             // per process: how many ghosts came from it
+  mutable std::size_t bytes_sent_ = 0;
 };
 
 }  // namespace slide
