@@ -24,6 +24,7 @@
 #include "fluid/communicator.hpp"
 #include "fluid/ghosts.hpp"
 #include "fluid/neighbor_grid.hpp"
+#include "fluid/parallel.hpp"
 #include "fluid/particles.hpp"
 
 namespace slide {
@@ -153,44 +154,37 @@ class ProcessHalo {
   // corrective matrices as their images (fluid/ghosts.hpp, copy_to_ghosts). Not for positions (refresh_motion).
   template <class T>
   void refresh(Particles<D>& P, std::vector<T>& v, const Communicator& comm) const {
-    std::vector<std::vector<unsigned char>> out(send_.size());
-    for (std::size_t r = 0; r < send_.size(); ++r) {
-      out[r].reserve(send_[r].size() * sizeof(T));
-      for (const std::uint32_t i : send_[r]) halo_bytes::put(out[r], v[i]);
-    }
-    std::vector<std::size_t> received_bytes;
-    const std::vector<unsigned char> in = exchange(out, comm, received_bytes);
+    const std::vector<unsigned char> in = exchange_values(comm, sizeof(T), [&](std::uint32_t i, unsigned char* out) {
+      std::memcpy(out, static_cast<const void*>(&v[i]), sizeof(T));
+    });
     const std::size_t r0 = P.real_count();
-    const unsigned char* q = in.data();
-    for (std::size_t g = 0; g < P.ghost_count(); ++g) {
+    parallel_for(P.ghost_count(), [&](std::size_t g) {
+      const unsigned char* q = in.data() + g * sizeof(T);
       const T value = halo_bytes::get<T>(q);
       const std::uint8_t flip = P.ghost_flip[g];
       if constexpr (std::is_same_v<T, Vec<D>>) v[r0 + g] = image_vector<D>(value, flip);
       else if constexpr (std::is_same_v<T, Mat<D>>) v[r0 + g] = image_matrix<D>(value, flip);
       else v[r0 + g] = value;
-    }
+    });
   }
 
   // Position (as the ghost's image), velocity and acceleration: what every stage that moves particles changes.
   void refresh_motion(Particles<D>& P, const Communicator& comm) const {
-    std::vector<std::vector<unsigned char>> out(send_.size());
-    for (std::size_t r = 0; r < send_.size(); ++r)
-      for (const std::uint32_t i : send_[r]) {
-        halo_bytes::put(out[r], P.position[i]);
-        halo_bytes::put(out[r], P.velocity[i]);
-        halo_bytes::put(out[r], P.acceleration[i]);
-      }
-    std::vector<std::size_t> received_bytes;
-    const std::vector<unsigned char> in = exchange(out, comm, received_bytes);
+    constexpr std::size_t vec = sizeof(Vec<D>);
+    const std::vector<unsigned char> in = exchange_values(comm, 3 * vec, [&](std::uint32_t i, unsigned char* out) {
+      std::memcpy(out, static_cast<const void*>(&P.position[i]), vec);
+      std::memcpy(out + vec, static_cast<const void*>(&P.velocity[i]), vec);
+      std::memcpy(out + 2 * vec, static_cast<const void*>(&P.acceleration[i]), vec);
+    });
     const std::size_t r0 = P.real_count();
-    const unsigned char* q = in.data();
-    for (std::size_t g = 0; g < P.ghost_count(); ++g) {
+    parallel_for(P.ghost_count(), [&](std::size_t g) {
+      const unsigned char* q = in.data() + g * 3 * vec;
       const std::size_t t = r0 + g;
       const std::uint8_t flip = P.ghost_flip[g];
       P.position[t] = image_point<D>(halo_bytes::get<Vec<D>>(q), flip, P.ghost_offset[g]);
       P.velocity[t] = image_vector<D>(halo_bytes::get<Vec<D>>(q), flip);
       P.acceleration[t] = image_vector<D>(halo_bytes::get<Vec<D>>(q), flip);
-    }
+    });
   }
 
   // Bytes sent to other processes so far (tools/bench --mpi).
@@ -237,6 +231,22 @@ class ProcessHalo {
     P.velocity[t] = image_vector<D>(P.velocity[t], flip);
     P.acceleration[t] = image_vector<D>(P.acceleration[t], flip);
     P.wall_normal[t] = image_vector<D>(P.wall_normal[t], flip);
+  }
+  // Each send list's entries, `bytes` each written by pack(i, out), to their processes, and the ghosts' entries back
+  // in ghost order: the sizes are the ghosts' (no count exchange).
+  template <class Pack>
+  std::vector<unsigned char> exchange_values(const Communicator& comm, std::size_t bytes, Pack&& pack) const {
+    std::vector<std::size_t> send_bytes(send_.size()), receive_bytes(send_.size()), first(send_.size() + 1, 0);
+    for (std::size_t r = 0; r < send_.size(); ++r) {
+      send_bytes[r] = send_[r].size() * bytes;
+      receive_bytes[r] = received_[r] * bytes;
+      first[r + 1] = first[r] + send_[r].size();
+      if (static_cast<int>(r) != comm.rank()) bytes_sent_ += send_bytes[r];
+    }
+    std::vector<unsigned char> send(first.back() * bytes);
+    for (std::size_t r = 0; r < send_.size(); ++r)
+      parallel_for(send_[r].size(), [&](std::size_t k) { pack(send_[r][k], send.data() + (first[r] + k) * bytes); });
+    return comm.exchange_known(send, send_bytes, receive_bytes);
   }
   std::vector<unsigned char> exchange(const std::vector<std::vector<unsigned char>>& out, const Communicator& comm,
                                       std::vector<std::size_t>& received_bytes) const {

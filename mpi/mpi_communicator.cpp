@@ -49,6 +49,13 @@ class MpiCommunicator final : public Communicator {
     const std::size_t p = static_cast<std::size_t>(size_);
     std::vector<std::uint64_t> out(send_bytes.begin(), send_bytes.end()), in(p);
     check(MPI_Alltoall(out.data(), 1, MPI_UINT64_T, in.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD), "MPI_Alltoall");
+    received_bytes.assign(in.begin(), in.end());
+    return exchange_known(send, send_bytes, received_bytes);
+  }
+  std::vector<unsigned char> exchange_known(const std::vector<unsigned char>& send,
+                                            const std::vector<std::size_t>& send_bytes,
+                                            const std::vector<std::size_t>& in) const override {
+    const std::size_t p = static_cast<std::size_t>(size_);
     std::vector<int> send_counts(p), send_offsets(p), receive_counts(p), receive_offsets(p);
     std::size_t sent = 0, received = 0;
     for (std::size_t r = 0; r < p; ++r) {
@@ -59,7 +66,6 @@ class MpiCommunicator final : public Communicator {
       sent += send_bytes[r];
       received += in[r];
     }
-    received_bytes.assign(in.begin(), in.end());
     std::vector<unsigned char> result(received);
     check(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, result.data(),
                         receive_counts.data(), receive_offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
