@@ -8,6 +8,7 @@
 // process; a decision that depends on particles is reduced first, so that all processes take it alike).
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace slide {
@@ -53,5 +54,17 @@ class SerialCommunicator final : public Communicator {
     return send;
   }
 };
+
+// Every process's numbers, process 0's first, on process 0 (empty elsewhere): small results for a report.
+inline std::vector<double> gather_on_first(const Communicator& comm, const std::vector<double>& mine) {
+  std::vector<std::size_t> send_bytes(static_cast<std::size_t>(comm.size()), 0), received;
+  send_bytes[0] = mine.size() * sizeof(double);
+  std::vector<unsigned char> send(send_bytes[0]);
+  if (!send.empty()) std::memcpy(send.data(), mine.data(), send.size());
+  const std::vector<unsigned char> in = comm.exchange(send, send_bytes, received);
+  std::vector<double> all(in.size() / sizeof(double));
+  if (!in.empty()) std::memcpy(all.data(), in.data(), in.size());
+  return all;
+}
 
 }  // namespace slide

@@ -39,13 +39,7 @@ Gathered<D> gather_by_id(const Simulation<D>& sim, const Communicator& comm) {
     mine.push_back(P.pressure[i]);
     mine.push_back(P.number_density[i]);
   }
-  std::vector<std::size_t> send_bytes(static_cast<std::size_t>(comm.size()), 0), received;
-  send_bytes[0] = mine.size() * sizeof(double);
-  std::vector<unsigned char> send(send_bytes[0]);
-  std::memcpy(send.data(), mine.data(), send.size());
-  const std::vector<unsigned char> in = comm.exchange(send, send_bytes, received);
-  std::vector<double> all(in.size() / sizeof(double));
-  std::memcpy(all.data(), in.data(), in.size());
+  const std::vector<double> all = gather_on_first(comm, mine);
   const std::size_t n = all.size() / per;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);

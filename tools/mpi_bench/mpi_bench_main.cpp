@@ -20,18 +20,6 @@
 
 namespace {
 
-// Every process's numbers, process 0's first, on process 0 (empty elsewhere).
-std::vector<double> gather(const slide::Communicator& comm, const std::vector<double>& mine) {
-  std::vector<std::size_t> send_bytes(static_cast<std::size_t>(comm.size()), 0), received;
-  send_bytes[0] = mine.size() * sizeof(double);
-  std::vector<unsigned char> send(send_bytes[0]);
-  std::memcpy(send.data(), mine.data(), send.size());
-  const std::vector<unsigned char> in = comm.exchange(send, send_bytes, received);
-  std::vector<double> all(in.size() / sizeof(double));
-  std::memcpy(all.data(), in.data(), in.size());
-  return all;
-}
-
 template <int D>
 int bench(const std::filesystem::path& scene_file, double end_time, const std::vector<std::string>& overrides,
           std::shared_ptr<const slide::Communicator> comm) {
@@ -47,7 +35,7 @@ int bench(const std::filesystem::path& scene_file, double end_time, const std::v
   const double loop = std::chrono::duration<double>(Clock::now() - loop_start).count();
   const double setup = std::chrono::duration<double>(loop_start - setup_start).count();
   const auto& cost = sim.domain().communication_cost();
-  const std::vector<double> all = gather(
+  const std::vector<double> all = slide::gather_on_first(
       *comm, {double(sim.particles().real_count()), double(sim.particles().ghost_count()), loop, cost.halo_seconds,
               cost.rebuild_seconds, cost.reduction_seconds, cost.bytes_sent});
   if (comm->rank() != 0) return result.instability ? 3 : 0;
