@@ -110,13 +110,21 @@ void Simulation<D>::initialise() {
 
 // Several processes (fluid/domain.hpp): what runs across them today, and the depth of their ghost layers.
 template <int D>
-void Simulation<D>::prepare_processes() {
+void Simulation<D>::check_processes(int processes) const {
   const auto refuse = [](const std::string& what) {
     throw std::invalid_argument(what + " cannot run on several processes yet: run it on one (without mpirun)");
   };
   if (bodies_) refuse("a scene with rigid bodies");
   if (options.viscous_scheme == ViscousScheme::implicit) refuse("method.viscous_scheme implicit");
   if (pore_water_) refuse("a scene with pore water under frictional sediment (method.pore_pressure)");
+  if (static_cast<std::size_t>(processes) > grid_.total_cells())
+    throw std::invalid_argument(fmt::format("{} processes for a neighbour grid of {} cells (each process needs at least "
+                                            "one): start fewer processes", processes, grid_.total_cells()));
+}
+
+template <int D>
+void Simulation<D>::prepare_processes() {
+  check_processes(domain_.communicator()->size());
   // A boundary particle's mirror image lies twice its depth in front of it, and the fluid around the image must be
   // here (fluid/wall_pressure.hpp, mirror_fill: the cells around the image's cell).
   const auto& P = domain_.particles;
@@ -127,6 +135,15 @@ void Simulation<D>::prepare_processes() {
   if (options.wall_pressure == WallPressure::mirror)
     reach = 1 + static_cast<int>(std::ceil(2.0 * deepest / grid_.cell_size()));
   domain_.set_halo_reach(reach);
+}
+
+template <int D>
+void Simulation<D>::distribute(std::shared_ptr<const Communicator> comm) {
+  domain_.set_communicator(std::move(comm));
+  if (!domain_.distributed()) return;
+  prepare_processes();
+  update_neighbors(true);
+  scratch_.resize(domain_.particles.size(), Vec<D>::Zero());
 }
 
 template <int D>

@@ -158,6 +158,24 @@ class Simulation {
   // strength, method.pore_pressure none, the first phase not Newtonian (the water is the first phase), or no gravity.
   PorePressureField<D> pore_pressure_field() const;
 
+  // Several processes (tools/run_driver.cpp): after the scene is built, settled and started as on one process, the
+  // run goes on across the processes of `comm`: each keeps its share of the particles (a re-sort, which leaves a
+  // scene just built or settled as it is: the same order, the same neighbour list). Throws std::invalid_argument for
+  // what does not run on several processes yet (prepare_processes) and for more processes than the grid has cells.
+  void distribute(std::shared_ptr<const Communicator> comm);
+  // The refusals of distribute, for `processes`, before a run (its settling) starts.
+  void check_processes(int processes) const;
+
+  // The first process's whole copy of a run on several processes (tools/observer_copy.hpp). owned_state_bytes: this
+  // process's owned particles (every array, with the position the neighbour list was built at) and the particles it
+  // took out of the run. adopt_whole_state, on a simulation of the same scene on one process: every process's
+  // owned_state_bytes one after another, and the running simulation's time and counters; afterwards the particles are
+  // stored, given ghosts and a neighbour list as one process would hold them at this step (by cell of the positions of
+  // the last re-sort, by id within a cell), so that every output reads the same numbers in the same order as one
+  // process's run. The corrected gradient's matrices are not carried (no output reads them).
+  std::vector<unsigned char> owned_state_bytes() const;
+  void adopt_whole_state(const std::vector<unsigned char>& gathered, const Simulation& running);
+
   // Fluid number density at an arbitrary point (fluid particles only), for free-surface detection by gauges.
   double fluid_number_density_at(const Vec<D>& point) const;
 

@@ -55,13 +55,18 @@ class SerialCommunicator final : public Communicator {
   }
 };
 
+// Every process's bytes, process 0's first, on process 0 (empty elsewhere).
+inline std::vector<unsigned char> gather_bytes_on_first(const Communicator& comm, const std::vector<unsigned char>& mine) {
+  std::vector<std::size_t> send_bytes(static_cast<std::size_t>(comm.size()), 0), received;
+  send_bytes[0] = mine.size();
+  return comm.exchange(mine, send_bytes, received);
+}
+
 // Every process's numbers, process 0's first, on process 0 (empty elsewhere): small results for a report.
 inline std::vector<double> gather_on_first(const Communicator& comm, const std::vector<double>& mine) {
-  std::vector<std::size_t> send_bytes(static_cast<std::size_t>(comm.size()), 0), received;
-  send_bytes[0] = mine.size() * sizeof(double);
-  std::vector<unsigned char> send(send_bytes[0]);
-  if (!send.empty()) std::memcpy(send.data(), mine.data(), send.size());
-  const std::vector<unsigned char> in = comm.exchange(send, send_bytes, received);
+  std::vector<unsigned char> bytes(mine.size() * sizeof(double));
+  if (!bytes.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
+  const std::vector<unsigned char> in = gather_bytes_on_first(comm, bytes);
   std::vector<double> all(in.size() / sizeof(double));
   if (!in.empty()) std::memcpy(all.data(), in.data(), in.size());
   return all;

@@ -81,6 +81,7 @@ class Domain {
   void set_halo_reach(int cells) { halo_reach_ = std::max(1, cells); }
   // Repartition when the largest process's share of the particles exceeds the mean by this factor.
   void set_rebalance_imbalance(double factor) { rebalance_imbalance_ = factor; }
+  double rebalance_imbalance() const { return rebalance_imbalance_; }
   long repartitions() const { return repartitions_; }
   const CommunicationCost& communication_cost() const { return cost_; }
 
@@ -108,12 +109,18 @@ class Domain {
       imbalance_after_partition_ = imbalance();
     }
   }
+  // Each process's owned particles, by process (every process calls it).
+  std::vector<std::int64_t> owned_counts() const {
+    const int processes = comm_ ? comm_->size() : 1, rank = comm_ ? comm_->rank() : 0;
+    std::vector<std::int64_t> counts(static_cast<std::size_t>(processes), 0);
+    counts[static_cast<std::size_t>(rank)] = static_cast<std::int64_t>(owned_count());
+    if (comm_) comm_->sum(counts.data(), counts.size());
+    return counts;
+  }
   // The largest process's owned particles over the mean (1 for one process).
   double imbalance() const {
     if (!distributed()) return 1.0;
-    std::vector<std::int64_t> counts(static_cast<std::size_t>(comm_->size()), 0);
-    counts[static_cast<std::size_t>(comm_->rank())] = static_cast<std::int64_t>(owned_count());
-    comm_->sum(counts.data(), counts.size());
+    const std::vector<std::int64_t> counts = owned_counts();
     std::int64_t total = 0, most = 0;
     for (const std::int64_t c : counts) {
       total += c;

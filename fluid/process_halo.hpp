@@ -187,6 +187,23 @@ class ProcessHalo {
     });
   }
 
+  // One particle's every array as bytes (a migrating particle, a new ghost, the first process's whole copy of a run:
+  // tools/observer_copy.hpp).
+  static std::size_t record_bytes(const Particles<D>& P) {
+    std::size_t n = 0;
+    P.for_each_array([&](const auto& v) { n += sizeof(typename std::decay_t<decltype(v)>::value_type); });
+    return n;
+  }
+  static void append_record(const Particles<D>& P, std::size_t i, std::vector<unsigned char>& out) {
+    P.for_each_array([&](const auto& v) { halo_bytes::put(out, v[i]); });
+  }
+  // Appends one particle from its record; returns its index.
+  static std::size_t read_record(Particles<D>& P, const unsigned char*& in) {
+    const std::size_t t = P.size();
+    P.for_each_array([&](auto& v) { v.push_back(halo_bytes::get<typename std::decay_t<decltype(v)>::value_type>(in)); });
+    return t;
+  }
+
   // Bytes sent to other processes so far (tools/bench --mpi).
   std::size_t bytes_sent() const { return bytes_sent_; }
 
@@ -208,20 +225,6 @@ class ProcessHalo {
       }
       if (k == D) return;
     }
-  }
-  static std::size_t record_bytes(const Particles<D>& P) {
-    std::size_t n = 0;
-    P.for_each_array([&](const auto& v) { n += sizeof(typename std::decay_t<decltype(v)>::value_type); });
-    return n;
-  }
-  static void append_record(const Particles<D>& P, std::size_t i, std::vector<unsigned char>& out) {
-    P.for_each_array([&](const auto& v) { halo_bytes::put(out, v[i]); });
-  }
-  // Appends one particle from its record; returns its index.
-  static std::size_t read_record(Particles<D>& P, const unsigned char*& in) {
-    const std::size_t t = P.size();
-    P.for_each_array([&](auto& v) { v.push_back(halo_bytes::get<typename std::decay_t<decltype(v)>::value_type>(in)); });
-    return t;
   }
   // Ghost g (at index t) as its image of the source's values it was received with.
   static void place_image(Particles<D>& P, std::size_t t, std::size_t g) {

@@ -28,6 +28,7 @@
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/checkpoint.hpp"
+#include "tools/observer_copy.hpp"
 #include "tools/output_folder.hpp"
 #include "tools/run_outputs.hpp"
 #include "tools/sweep/recommendation.hpp"
@@ -49,6 +50,19 @@ double peak_resident_bytes() {
   return 1024.0 * double(u.ru_maxrss);
 }
 }  // namespace
+namespace {
+std::streambuf* own_stderr = nullptr;  // where standard error went before keep_quiet
+}  // namespace
+
+void keep_quiet() {
+  if (!own_stderr) own_stderr = std::cerr.rdbuf(nullptr);
+}
+void speak_up() {
+  if (own_stderr) std::cerr.rdbuf(own_stderr);
+  std::cerr.clear();
+  own_stderr = nullptr;
+}
+
 namespace {
 
 // The signal that asked the run to stop (SIGINT: Ctrl-C; SIGTERM: what schedulers send before they kill a job), or 0.
@@ -147,15 +161,24 @@ int check_command(const RunArguments& args) {
 
 namespace {
 
-// SIGINT or SIGTERM stops the loop before the next step, and so does reaching --stop-at.
+// SIGINT or SIGTERM stops the loop before the next step, and so does reaching --stop-at. On several processes every
+// one stops at the same step: the signal any of them got (the larger number, SIGTERM before SIGINT) counts for all.
 template <int D>
 class InterruptWatch : public StepObserver<D> {
  public:
-  explicit InterruptWatch(double stop_at) : stop_at_(stop_at) {}
-  bool before_step(const Simulation<D>& sim) override { return interrupted == 0 && sim.time() < stop_at_; }
+  InterruptWatch(double stop_at, const Communicator* world) : stop_at_(stop_at), world_(world) {}
+  bool before_step(const Simulation<D>& sim) override {
+    if (world_ && world_->size() > 1) {
+      std::int64_t signal = interrupted;
+      world_->max(&signal, 1);
+      interrupted = static_cast<std::sig_atomic_t>(signal);
+    }
+    return interrupted == 0 && sim.time() < stop_at_;
+  }
 
  private:
   double stop_at_;
+  const Communicator* world_;
 };
 
 // The state a failed run leaves as its last good snapshot: every `every` steps, before the step, what a snapshot
@@ -419,13 +442,14 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
         return 2;
       }
     }
-    InterruptWatch<D> interrupt(std::numeric_limits<double>::infinity());
+    InterruptWatch<D> interrupt(std::numeric_limits<double>::infinity(), args.world.get());
     ProgressLine<D> progress(Clock::now(), settling.duration(), sim, "settling: ");
     std::vector<StepObserver<D>*> observers{&interrupt};
     if (!args.quiet) observers.push_back(&progress);
     try {
+      // Several processes settle the whole scene alike (it is distributed after): the first writes the checkpoint.
       if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped)
-        return stop_while_settling(run, sim, settling);
+        return args.world && args.world->rank() > 0 ? 128 + interrupted : stop_while_settling(run, sim, settling);
       settled = settling.finish();
     } catch (const std::runtime_error& e) {  // it went unstable, or water left the domain
       std::cerr << (args.quiet ? "" : "\n") << refused << e.what() << "\n";
@@ -443,6 +467,35 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
   return std::nullopt;
 }
 
+// A run on several processes, beside its running simulation: the first process's observers' copy
+// (tools/observer_copy.hpp) and what brings it up to date. Absent on one process.
+template <int D>
+struct ProcessesOfRun {
+  const Communicator* world;
+  std::unique_ptr<cases::Scene<D>> copy;  // the first process's; null on the others
+  std::optional<ObserverCopy<D>> observer;
+  bool first() const { return world->rank() == 0; }
+};
+
+// Takes the settled, started scene onto the processes (each its share); the first process builds its copy. A scene
+// that cannot run there was refused before (run_scene); what is refused here exits 2 too, nothing written.
+template <int D>
+std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const YAML::Node& resolved,
+                                                 Simulation<D>& sim) {
+  ProcessesOfRun<D> p{args.world.get(), nullptr, std::nullopt};
+  if (p.first()) {
+    p.copy = build_or_report<D>(args, resolved, cases::StartOfRun::left_to_caller);
+    if (!p.copy) return std::nullopt;
+  }
+  try {
+    sim.distribute(args.world);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "; nothing was written\n";
+    return std::nullopt;
+  }
+  return p;
+}
+
 // The run of a D-dimensional scene: its resolved scene (a new run) or its checkpoint (a resumed one).
 template <int D>
 int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolved, std::optional<Checkpoint> checkpoint,
@@ -450,6 +503,15 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   std::optional<PreparedRun<D>> run =
       checkpoint ? prepare_resumed_run<D>(args, std::move(*checkpoint)) : prepare_new_run<D>(args, resolved);
   if (!run) return 2;
+  const bool several = args.world && args.world->size() > 1;
+  if (several) {  // before it settles
+    try {
+      run->scene->simulation->check_processes(args.world->size());
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "; nothing was run or written\n";
+      return 2;
+    }
+  }
   // From here on SIGINT and SIGTERM stop the run where it is, settling or stepping: before the next step, with a
   // checkpoint (exit 128 + signal). While the scene is built they end the process at once, as by default: nothing
   // has been computed that a checkpoint would keep, and the build does not look at a flag (found in review: a build
@@ -464,32 +526,58 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
     if (!slide.floats_warning.empty()) std::cerr << "slide: warning: " << slide.floats_warning << "\n";
   if (const auto ended = settle_before_the_run(*run, args)) return *ended;
-  std::filesystem::create_directories(out);
-  // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
-  std::error_code no_checkpoint;
-  if (!run->resumed_from) std::filesystem::remove(checkpoint_path(out), no_checkpoint);
-  RunOutputs<D> outputs(*scene, out, run->resumed_from.has_value());
-  CheckpointObserver<D> checkpoints(*run, outputs, sim);
+  std::optional<ProcessesOfRun<D>> processes;
+  if (several) {
+    processes = distribute_run<D>(args, *resolved, sim);
+    if (!processes) return 2;
+  }
+  const bool writes = !processes || processes->first();  // this process writes the outputs
+  // What the outputs read: the simulation, or on several processes the first's copy of it.
+  const Simulation<D>& whole = processes && processes->copy ? *processes->copy->simulation : sim;
+  std::optional<RunOutputs<D>> outputs;
+  if (writes) {
+    std::filesystem::create_directories(out);
+    // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
+    std::error_code no_checkpoint;
+    if (!run->resumed_from) std::filesystem::remove(checkpoint_path(out), no_checkpoint);
+    outputs.emplace(*scene, whole, out, run->resumed_from.has_value());
+  }
+  if (processes)
+    processes->observer.emplace(*processes->world, processes->copy ? processes->copy->simulation.get() : nullptr,
+                                outputs ? &*outputs : nullptr);
+  // Several processes: no checkpoints yet (refused in run_command).
+  std::optional<CheckpointObserver<D>> checkpoints;
+  if (!processes) checkpoints.emplace(*run, *outputs, sim);
   if (run->resumed_from) {
     try {
       StateReader in(run->resumed_from->state);
       sim.restore_state(in);
-      outputs.restore_state(in);
-      checkpoints.restore(in);
+      outputs->restore_state(in);
+      checkpoints->restore(in);
     } catch (const std::runtime_error& e) {
       std::cerr << "slide: --resume " << out.string() << ": " << e.what() << "; nothing was run\n";
       return 2;
     }
   }
+  // The copy brought up to date (a collective on several processes: every one calls it at the same point).
+  const auto gather = [&] {
+    if (processes) processes->observer->gather(sim);
+  };
 
   const auto loop_start = Clock::now();
   const double cpu_at_loop_start = process_cpu_seconds();
   const long steps_at_loop_start = sim.step_count();
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
   auto loop_rate = [&](double wall) {
-    return wall > 0 ? double(sim.particles().real_count()) * double(sim.step_count() - steps_at_loop_start) / wall : 0.0;
+    return wall > 0 ? double(whole.particles().real_count()) * double(sim.step_count() - steps_at_loop_start) / wall
+                    : 0.0;
   };
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
+    // The imbalance is a reduction (every process), but not where one process failed alone.
+    const bool collective = processes && status != "failed";
+    const std::vector<std::int64_t> owned = collective ? sim.domain().owned_counts() : std::vector<std::int64_t>{};
+    const double imbalance = collective ? sim.domain().imbalance() : 1.0;
+    if (!writes) return;
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     json j;
     j["program"] = "slide";
@@ -505,7 +593,13 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     j["status"] = status;
     j["message"] = message;
     j["threads"] = thread_count();
-    j["particles"] = {{"total", sim.particles().real_count()}, {"fluid", scene->fluid_count},
+    j["processes"] = processes ? processes->world->size() : 1;
+    if (processes)
+      j["partition"] = {{"rebalance_imbalance", sim.domain().rebalance_imbalance()},
+                        {"repartitions", sim.domain().repartitions()},
+                        {"imbalance", imbalance},
+                        {"owned_particles", owned}};
+    j["particles"] = {{"total", whole.particles().real_count()}, {"fluid", scene->fluid_count},
                       {"wall", scene->wall_count},      {"dummy", scene->dummy_count}};
     j["derived"] = {{"n0", sim.lattice.n0},
                     {"lambda", sim.lattice.lambda},
@@ -539,8 +633,8 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     j["resident_bytes_at_start"] = resident_bytes_at_start;
     j["memory_estimate_bytes"] = scene->memory_estimate_bytes;
     j["pair_lanes"] = pair_lanes;
-    j["snapshots"] = outputs.snapshot_count();
-    j["left_the_domain"] = left_the_domain_json(sim);
+    j["snapshots"] = outputs->snapshot_count();
+    j["left_the_domain"] = left_the_domain_json(whole);
     j["scene"] = to_json(scene->resolved);
     for (auto it = extra.begin(); it != extra.end(); ++it) j[it.key()] = it.value();
     write_file_atomically(out / "run.json", j.dump(2) + "\n");
@@ -551,12 +645,15 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   std::signal(SIGXFSZ, SIG_IGN);
   LastGoodState<D> last_good(sim);
   try {
-    if (!run->resumed_from) outputs.write_initial();
+    gather();
+    if (writes && !run->resumed_from) outputs->write_initial();
     write_run_json("running", "", json::object());
 
-    InterruptWatch<D> interrupt(args.stop_at);
+    InterruptWatch<D> interrupt(args.stop_at, args.world.get());
     ProgressLine<D> progress(loop_start, scene->end_time, sim);
-    std::vector<StepObserver<D>*> observers{&interrupt, &last_good, &outputs, &checkpoints};
+    std::vector<StepObserver<D>*> observers{&interrupt, &last_good};
+    if (processes) observers.push_back(&*processes->observer);
+    else observers.insert(observers.end(), {&*outputs, &*checkpoints});
     if (!args.quiet) observers.push_back(&progress);
     const AdvanceResult result = advance<D>(sim, scene->end_time, observers);
     std::signal(SIGINT, previous_sigint);
@@ -564,22 +661,33 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
 
     if (result.outcome == AdvanceResult::Outcome::stopped) {
       // The checkpoint first: it records the series as a straight run has it, without the final snapshot below.
-      checkpoints.write();
-      outputs.write_snapshot(sim.particles(), sim.time(), sim.step_count());
-      outputs.flush();
+      if (checkpoints) checkpoints->write();
+      gather();
+      if (writes) {
+        outputs->write_snapshot(whole.particles(), sim.time(), sim.step_count());
+        outputs->flush();
+      }
       const int signal = interrupted;
       const std::string why = signal == 0 ? "stopped as --stop-at asked" : signal == SIGTERM ? "interrupted by SIGTERM"
                                                                                             : "interrupted by SIGINT";
-      const std::string msg = fmt::format(
-          "{} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with slide run --resume {}",
-          why, sim.time(), sim.step_count(), out.string());
+      const std::string msg =
+          processes ? fmt::format("{} at t = {:.6g} s (step {}); final snapshot written (a run on several processes "
+                                  "writes no checkpoint yet: it cannot be resumed)",
+                                  why, sim.time(), sim.step_count())
+                    : fmt::format("{} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with "
+                                  "slide run --resume {}",
+                                  why, sim.time(), sim.step_count(), out.string());
       write_run_json(signal == 0 ? "stopped" : "interrupted", msg, json::object());
       if (signal != 0 || !args.quiet) std::cerr << "\nslide: " << msg << "\n";
       return signal == 0 ? 0 : 128 + signal;
     }
     if (const auto& bad = result.instability) {
-      outputs.write_snapshot(last_good.snapshot, last_good.time, last_good.step);
-      outputs.flush();
+      // Several processes: each kept its own particles' last good state; the first writes them as one.
+      const IdOrdered<D> pieces =
+          processes ? IdOrdered<D>::merged(gather_bytes_on_first(*processes->world, last_good.snapshot.bytes()))
+                    : IdOrdered<D>();
+      if (writes) outputs->write_snapshot(processes ? pieces : last_good.snapshot, last_good.time, last_good.step);
+      if (writes) outputs->flush();
       const std::string where = bad->position.size() >= 2 ? position_text(bad->position) : "";
       const std::string msg = fmt::format(
           "unstable at t = {:.6g} s (step {}): particle {} at {}: {}; last good snapshot: t = {:.6g} s (step {})",
@@ -596,29 +704,36 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
       std::cerr << "\nslide: " << msg << "\n";
       return 3;
     }
-    outputs.write_final();
+    gather();
+    if (writes) outputs->write_final();
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     const std::string msg =
         fmt::format("completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",
                     sim.time(), sim.step_count(), wall, loop_rate(wall) / 1e6, limit_summary(sim.limit_counts())) +
-        left_the_domain_note(sim);
+        (processes ? fmt::format(" on {} processes", processes->world->size()) : std::string()) +
+        left_the_domain_note(whole);
     write_run_json("completed", msg, json::object());
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\rslide: " << msg << "\n";
     return 0;
   } catch (const std::exception& e) {
     // A failed write (a full disk, a file-size limit) or anything unexpected. Every file written before is whole
     // (each is written under a temporary name and renamed); the last good state is written too where it still can be.
+    // Several processes: this one alone failed, and the others may wait for it; it says why, writes what it can
+    // without them, and its exit 1 stops them all (tools/slide_main.cpp).
     std::signal(SIGINT, previous_sigint);
     std::signal(SIGTERM, previous_sigterm);
-    const std::string msg = fmt::format("stopped at t = {:.6g} s (step {}) by an error: {}; the files written before "
+    if (processes) speak_up();
+    const std::string msg = fmt::format("stopped at t = {:.6g} s (step {}) by an error{}: {}; the files written before "
                                         "are intact",
-                                        sim.time(), sim.step_count(), e.what());
+                                        sim.time(), sim.step_count(),
+                                        processes ? fmt::format(" on process {}", processes->world->rank()) : "",
+                                        e.what());
     std::cerr << "\nslide: error: " << msg << "\n";
     try {
       // Only a state newer than the last snapshot: the series stays in time order.
-      if (last_good.time > outputs.last_snapshot_time()) outputs.write_snapshot(last_good.snapshot, last_good.time,
-                                                                                 last_good.step);
-      outputs.flush();
+      if (!processes && last_good.time > outputs->last_snapshot_time())
+        outputs->write_snapshot(last_good.snapshot, last_good.time, last_good.step);
+      if (outputs) outputs->flush();
     } catch (const std::exception&) {
     }
     try {
@@ -631,6 +746,16 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
 
 }  // namespace
 
+namespace {
+// What a run on several processes cannot do yet, named (empty: nothing in the arguments).
+std::string several_processes_refusal(const RunArguments& args) {
+  if (!args.world || args.world->size() == 1) return "";
+  if (!args.resume.empty()) return "--resume: a run on several processes cannot resume a checkpoint yet";
+  if (std::isfinite(args.stop_at)) return "--stop-at: a run on several processes writes no checkpoint yet";
+  return "";
+}
+}  // namespace
+
 int run_command(const RunArguments& args) {
   const auto setup_start = Clock::now();
   // The program's own memory (code, libraries, runtime) before any scene: what the particles cost is the peak above it.
@@ -640,6 +765,10 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
+  if (const std::string why = several_processes_refusal(args); !why.empty()) {
+    std::cerr << "slide: " << why << " (run on one process: without mpirun, or -np 1); nothing was run or written\n";
+    return 2;
+  }
   // The scene's dimension decides which simulation runs: from the scene file, or from the checkpoint's scene.
   std::optional<YAML::Node> resolved;
   std::optional<Checkpoint> checkpoint;
@@ -648,6 +777,12 @@ int run_command(const RunArguments& args) {
     resolved = resolve_or_report(args);
     if (!resolved) return 2;
     dimension = cases::scene_dimension(*resolved);
+    if (args.world && args.world->size() > 1 && (*resolved)["output"]["checkpoint_interval"].as<double>() > 0.0) {
+      std::cerr << "slide: invalid scene " << args.scene.string() << ": output.checkpoint_interval: a run on several "
+                << "processes writes no checkpoints yet: set it to 0 or run on one process; nothing was run or "
+                   "written\n";
+      return 2;
+    }
   } else {
     try {
       checkpoint = read_checkpoint(args.resume);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <fmt/format.h>
@@ -37,16 +38,61 @@ void IdOrdered<D>::assign(const Particles<D>& P) {
   };
   // By id. Without gaps the ids are 0 .. n - 1 and each particle goes straight to its slot (the last good state
   // takes this every few steps, and a temporary index each time fragmented the heap).
-  if (P.id_end() == n) {
+  ParticleId id_end = 0;
+  for (std::size_t i = 0; i < n; ++i) id_end = std::max<ParticleId>(id_end, P.id[i] + 1);
+  if (id_end == n) {
     for (std::size_t i = 0; i < n; ++i) put(P.id[i], i);
     return;
   }
-  // Ids have gaps where particles left the domain (Particles::remove_keeping_ids).
-  std::vector<std::uint32_t> index_of_id(P.id_end(), std::numeric_limits<std::uint32_t>::max());
+  // Ids have gaps where particles left the domain (Particles::remove_keeping_ids), or where this process's share of
+  // the particles (several processes) leaves the others' out.
+  std::vector<std::uint32_t> index_of_id(id_end, std::numeric_limits<std::uint32_t>::max());
   for (std::size_t i = 0; i < n; ++i) index_of_id[P.id[i]] = static_cast<std::uint32_t>(i);
   std::size_t slot = 0;
   for (const std::uint32_t i : index_of_id)
     if (i != std::numeric_limits<std::uint32_t>::max()) put(slot++, i);
+}
+
+template <int D>
+std::vector<unsigned char> IdOrdered<D>::bytes() const {
+  std::vector<unsigned char> out;
+  const auto put = [&out](const auto& v) {
+    const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+    out.insert(out.end(), p, p + v.size() * sizeof(v[0]));
+  };
+  const std::uint64_t n = id.size();
+  out.insert(out.end(), reinterpret_cast<const unsigned char*>(&n), reinterpret_cast<const unsigned char*>(&n + 1));
+  put(position), put(velocity), put(pressure), put(number_density), put(density), put(phase), put(kind), put(id);
+  return out;
+}
+
+template <int D>
+IdOrdered<D> IdOrdered<D>::merged(const std::vector<unsigned char>& pieces) {
+  IdOrdered all;
+  for (const unsigned char *in = pieces.data(), *end = in + pieces.size(); in < end;) {
+    std::uint64_t n = 0;
+    std::memcpy(&n, in, sizeof n);
+    in += sizeof n;
+    const auto get = [&in, n](auto& v, std::size_t per) {
+      const std::size_t old = v.size(), bytes = n * per * sizeof(v[0]);
+      v.resize(old + n * per);
+      std::memcpy(v.data() + old, in, bytes);
+      in += bytes;
+    };
+    get(all.position, D), get(all.velocity, D), get(all.pressure, 1), get(all.number_density, 1), get(all.density, 1);
+    get(all.phase, 1), get(all.kind, 1), get(all.id, 1);
+  }
+  std::vector<std::size_t> order(all.id.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+  const auto permute = [&order](auto& v, std::size_t per) {
+    auto was = v;
+    for (std::size_t k = 0; k < order.size(); ++k)
+      for (std::size_t c = 0; c < per; ++c) v[per * k + c] = was[per * order[k] + c];
+  };
+  permute(all.position, D), permute(all.velocity, D), permute(all.pressure, 1), permute(all.number_density, 1);
+  permute(all.density, 1), permute(all.phase, 1), permute(all.kind, 1), permute(all.id, 1);
+  return all;
 }
 
 namespace {
@@ -121,8 +167,9 @@ std::vector<double> body_row(const RigidBodies<D>& bodies, int b, const typename
 }  // namespace
 
 template <int D>
-RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming)
-    : scene_(scene), sim_(*scene.simulation) {
+RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& observed, const std::filesystem::path& out,
+                          bool resuming)
+    : scene_(scene), sim_(observed) {
   if (scene.output.snapshots) {
     SnapshotFormat format;
     if (!scene.output.snapshot_fields.empty()) format.fields = scene.output.snapshot_fields;
@@ -336,6 +383,21 @@ void RunOutputs<D>::write_initial() {
   sample_slide_outlines();
   sample_slide_shapes();
   flush();
+}
+
+// after_step's conditions, each in the same words.
+template <int D>
+bool RunOutputs<D>::due(double t) const {
+  const auto& ps = scene_.profiles;
+  const auto& outlines = scene_.slide_outline_times;
+  bool shape_due = false;
+  if (D == 2 && slide_shapes_) {  // 2-D scenes only so far (sample_slide_shapes)
+    const auto& spec = *scene_.slide_shapes;
+    shape_due = next_shape_ < spec.shapes.size() && t >= spec.shapes[next_shape_].time_measured + spec.time_offset - 1e-12;
+  }
+  return t >= next_sample_ - eps_ || (profiles_ && next_profile_ < ps.times.size() && t >= ps.times[next_profile_] - 1e-12) ||
+         (slide_outline_ && next_outline_ < outlines.size() && t >= outlines[next_outline_] - 1e-12) || shape_due ||
+         (bodies_ && t >= next_body_sample_ - eps_) || t >= next_snapshot_ - eps_;
 }
 
 template <int D>

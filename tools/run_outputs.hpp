@@ -26,6 +26,9 @@ struct IdOrdered {
   // Refills from P, reusing the arrays' storage (the last good state takes one every few steps).
   void assign(const Particles<D>& P);
   SnapshotFields fields() const { return {D, position, velocity, pressure, number_density, density, phase, kind, id}; }
+  // Several processes: each process's piece as bytes, and every process's pieces (one after another) as one, by id.
+  std::vector<unsigned char> bytes() const;
+  static IdOrdered merged(const std::vector<unsigned char>& pieces);
 };
 
 // Every CSV a scene asks for, in 2-D and 3-D (the 2-D diagnostics, surge front and velocity profile, are absent from
@@ -34,7 +37,14 @@ template <int D>
 class RunOutputs : public StepObserver<D> {
  public:
   // resuming: the outputs continue those in `out` (restore_state), rather than starting afresh.
-  RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming = false);
+  RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming = false)
+      : RunOutputs(scene, *scene.simulation, out, resuming) {}
+  // The outputs of a run on several processes: the scene's, read from the first process's whole copy of the run
+  // (tools/observer_copy.hpp), which the copy's owner brings up to date before each step where due() says so.
+  RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& observed, const std::filesystem::path& out,
+             bool resuming = false);
+  // Whether after_step at time t samples or writes anything.
+  bool due(double t) const;
 
   // Writes the initial state (snapshot and first samples) and flushes.
   void write_initial();

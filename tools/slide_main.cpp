@@ -15,7 +15,7 @@
 #include "tools/sweep/sweep_command.hpp"
 
 namespace {
-int run_main(int argc, char** argv) {
+int run_main(int argc, char** argv, std::shared_ptr<const slide::Communicator> world) {
   CLI::App app{"slide: weakly compressible MPS simulator of landslides falling into water"};
   app.require_subcommand(1);
   slide::tools::RunArguments args;
@@ -82,6 +82,12 @@ int run_main(int argc, char** argv) {
   }
   args.scene = scene;
   args.resume = resume_dir;
+  args.world = world;
+  if (world && world->rank() > 0) args.quiet = true;
+  // The commands other than run do not split their work: on several processes the first runs them alone.
+  if (world && world->size() > 1 && !app.got_subcommand("run")) {
+    if (world->rank() > 0) return 0;
+  }
   if (app.got_subcommand("run") && scene.empty() && resume_dir.empty()) {
     std::cerr << "slide run: give a scene file, or --resume DIR\n";
     return 2;
@@ -112,26 +118,28 @@ int run_main(int argc, char** argv) {
 // Nothing escapes: whatever a command did not expect ends the process with exit 1 and one line (a run in its step
 // loop has already written its last good state and run.json by then: tools/run_driver.cpp).
 //
-// Started by mpirun (or srun), the program starts MPI (mpi/mpi_communicator.hpp). One process runs as without it; on
-// several, the commands do not run yet (the step loop does: tests/mpi/, but the outputs, bodies and the implicit solve
-// do not), and each process would otherwise run the whole scene into the same folder: exit 2, nothing written.
+// Started by mpirun (or srun), the program starts MPI (mpi/mpi_communicator.hpp). One process runs as without it.
+// Several run `slide run` together (tools/run_driver.cpp; the other commands run on the first alone): the first
+// speaks and writes, and where one process fails alone (exit 1) it stops them all with its code, since the others
+// may be waiting for it.
 int main(int argc, char** argv) {
   slide::cases::program_resident_bytes();  // the program's own memory, taken before any scene (particle_budget.hpp)
+  std::optional<slide::mpi::MpiSession> mpi;
+  bool several = false;
   try {
-    std::optional<slide::mpi::MpiSession> mpi;
     if (slide::mpi::launched_by_mpi()) mpi.emplace(argc, argv);
-    if (mpi && mpi->world()->size() > 1) {
-      if (mpi->world()->rank() == 0)
-        std::cerr << "slide: started on " << mpi->world()->size()
-                  << " processes (mpirun -np): runs on several processes are not available yet; start slide on one "
-                     "process (without mpirun, or -np 1) and give it threads (--threads)\n";
-      return 2;
-    }
-    return run_main(argc, argv);
+    several = mpi && mpi->world()->size() > 1;
+    if (several && mpi->world()->rank() > 0) slide::tools::keep_quiet();
+    const int code = run_main(argc, argv, mpi ? mpi->world() : nullptr);
+    if (several && code == 1) slide::mpi::abort_all(code);
+    return code;
   } catch (const std::exception& e) {
+    slide::tools::speak_up();
     std::cerr << "slide: error: " << e.what() << "\n";
   } catch (...) {
+    slide::tools::speak_up();
     std::cerr << "slide: error: unknown exception\n";
   }
+  if (several) slide::mpi::abort_all(1);
   return 1;
 }

@@ -1,0 +1,47 @@
+#pragma once
+// A run on several processes (mpirun) writes what one process's run writes, byte for byte. The first process keeps a
+// second simulation of the scene that never steps, the observers' copy: whenever an output is due, every process sends
+// it its owned particles and the copy takes them in as one process would hold them at that step
+// (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a one-process
+// run, gauges, fronts and snapshots alike.
+//
+// The copy's memory and the gathering's time on the first process grow with the whole scene (measured: tools/bench
+// --mpi): past one machine's memory, snapshots written by every process (parallel HDF5) and observers that reduce
+// across processes take its place (not yet).
+#include <cstdint>
+
+#include "coupling/advance.hpp"
+#include "fluid/communicator.hpp"
+#include "tools/run_outputs.hpp"
+
+namespace slide::tools {
+
+template <int D>
+class ObserverCopy : public StepObserver<D> {
+ public:
+  // copy and outputs: the first process's; null on the others.
+  ObserverCopy(const Communicator& world, Simulation<D>* copy, RunOutputs<D>* outputs)
+      : world_(&world), copy_(copy), outputs_(outputs) {}
+
+  // Every process: whether the outputs sample after this step (the first process knows), and then the copy first.
+  void after_step(Simulation<D>& sim, double dt) override {
+    std::int64_t due = outputs_ && outputs_->due(sim.time()) ? 1 : 0;
+    world_->max(&due, 1);
+    if (due == 0) return;
+    gather(sim);
+    if (outputs_) outputs_->after_step(*copy_, dt);
+  }
+
+  // Brings the copy to the running simulation's present state (every process calls it).
+  void gather(const Simulation<D>& sim) {
+    const std::vector<unsigned char> all = gather_bytes_on_first(*world_, sim.owned_state_bytes());
+    if (copy_) copy_->adopt_whole_state(all, sim);
+  }
+
+ private:
+  const Communicator* world_;
+  Simulation<D>* copy_;
+  RunOutputs<D>* outputs_;
+};
+
+}  // namespace slide::tools
