@@ -143,6 +143,7 @@ void Simulation<D>::distribute(std::shared_ptr<const Communicator> comm) {
   if (!domain_.distributed()) return;
   prepare_processes();
   update_neighbors(true);
+  --rebuilds_;  // a re-sort at the same positions, which one process does not make: run.json counts as one process
   scratch_.resize(domain_.particles.size(), Vec<D>::Zero());
 }
 
