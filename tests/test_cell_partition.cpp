@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fluid/cell_partition.hpp"
+#include "tests/scene_runner.hpp"
 
 namespace slide {
 namespace {
@@ -49,6 +50,35 @@ TEST(CellPartition, AsManyProcessesAsCellsGetOneCellEach) {
 
 TEST(CellPartition, MoreProcessesThanCellsAreRefused) {
   EXPECT_THROW(CellPartition<2>({2, 1}, std::vector<std::int64_t>(2, 1), 3), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace slide
+
+namespace slide {
+namespace {
+
+// A run on more processes than its neighbour grid has cells is refused before it starts (slide run exits 2 with
+// this message; Simulation::check_processes), and so are the models that do not run on several processes yet.
+TEST(CellPartition, ARunOnMoreProcessesThanCellsIsRefusedByName) {
+  const auto scene = testing::load_shipped_scene<2>("dam_break_2d.yaml", {"end_time=0.01"});
+  const Simulation<2>& sim = *scene->simulation;
+  const auto cells = static_cast<int>(sim.grid().total_cells());
+  EXPECT_NO_THROW(sim.check_processes(cells));
+  try {
+    sim.check_processes(cells + 1);
+    ADD_FAILURE() << "not refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(std::to_string(cells + 1) + " processes for a neighbour grid of " +
+                                         std::to_string(cells) + " cells"),
+              std::string::npos)
+        << e.what();
+  }
+  const auto bodies = cases::build_scene<2>(
+      cases::load_scene(testing::source_dir() / "cases" / "floating_block_2d.yaml", {}), "floating_block_2d",
+      testing::source_dir() / "cases", cases::StartOfRun::left_to_caller);  // not settled: refused before that
+  EXPECT_THROW(bodies->simulation->check_processes(2), std::invalid_argument);
+  EXPECT_NO_THROW(bodies->simulation->check_processes(1));
 }
 
 }  // namespace

@@ -45,5 +45,37 @@ TEST(IdOrdered, RefilledInPlaceFromShuffledDenseAndThenGappedIds) {
   EXPECT_EQ(s.id, (std::vector<ParticleId>{0, 1, 2, 4, 5, 6, 8, 9, 10}));
 }
 
+// A process's share of a run on several processes: its ids are some of the run's, with nothing removed
+// (removed_count 0: the share is not the run's id range). Each share by id, then the shares merged as one by id: what
+// one process holding all of them writes. (Before: the share of ids 5..10 took the dense path and wrote past its
+// arrays, measured as a heap corruption under mpirun.)
+TEST(IdOrdered, SharesOfSeveralProcessesMergeAsOneById) {
+  Particles<2> all, first, second;
+  for (int i = 0; i < 11; ++i) {
+    const Vec<2> x(0.1 * i, 0.02 * i);
+    all.add(x, Kind::fluid, 0, 1000.0, 1e-3);
+    Particles<2>& share = i % 3 == 1 || i > 6 ? second : first;
+    const std::size_t k = share.add(x, Kind::fluid, 0, 1000.0, 1e-3);
+    share.id[k] = static_cast<ParticleId>(i);
+    share.pressure[k] = all.pressure[static_cast<std::size_t>(i)] = 10.0 * i;
+  }
+  std::vector<Vec<2>> buffer;
+  second.reorder({4, 0, 3, 1, 5, 2}, buffer);
+  const tools::IdOrdered<2> a(first), b(second), whole(all);
+  expect_by_id(a, first);
+  expect_by_id(b, second);
+  std::vector<unsigned char> pieces = b.bytes(), first_bytes = a.bytes();
+  pieces.insert(pieces.end(), first_bytes.begin(), first_bytes.end());
+  const tools::IdOrdered<2> merged = tools::IdOrdered<2>::merged(pieces);
+  EXPECT_EQ(merged.id, whole.id);
+  EXPECT_EQ(merged.position, whole.position);
+  EXPECT_EQ(merged.velocity, whole.velocity);
+  EXPECT_EQ(merged.pressure, whole.pressure);
+  EXPECT_EQ(merged.number_density, whole.number_density);
+  EXPECT_EQ(merged.density, whole.density);
+  EXPECT_EQ(merged.phase, whole.phase);
+  EXPECT_EQ(merged.kind, whole.kind);
+}
+
 }  // namespace
 }  // namespace slide
