@@ -138,14 +138,26 @@ void Simulation<D>::prepare_processes() {
   domain_.set_halo_reach(reach);
 }
 
+// The re-sort that shares the particles is made at the positions of the last re-sort (a scene just built or settled:
+// the present ones; a resumed run: the checkpoint's), so that every process's particles, ghosts and neighbour lists
+// are those the run would have had on these processes since then; then the present positions go back in place.
 template <int D>
 void Simulation<D>::distribute(std::shared_ptr<const Communicator> comm) {
   domain_.set_communicator(std::move(comm));
   if (!domain_.distributed()) return;
   prepare_processes();
+  auto& P = domain_.particles;
+  std::vector<Vec<D>> now_by_id(P.id_end());
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    now_by_id[P.id[i]] = P.position[i];
+    P.position[i] = position_at_build_[i];
+  }
   update_neighbors(true);
-  --rebuilds_;  // a re-sort at the same positions, which one process does not make: run.json counts as one process
-  scratch_.resize(domain_.particles.size(), Vec<D>::Zero());
+  --rebuilds_;  // a re-sort one process does not make: run.json counts as one process
+  for (std::size_t i = 0; i < P.real_count(); ++i) P.position[i] = now_by_id[P.id[i]];
+  domain_.refresh({HaloField::motion, HaloField::number_density, HaloField::pressure, HaloField::viscosity,
+                   HaloField::wall_fraction, HaloField::wall_fill, HaloField::wall_normal});
+  scratch_.resize(P.size(), Vec<D>::Zero());
 }
 
 template <int D>

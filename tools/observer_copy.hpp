@@ -9,6 +9,8 @@
 // --mpi): past one machine's memory, snapshots written by every process (parallel HDF5) and observers that reduce
 // across processes take its place (not yet).
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include "coupling/advance.hpp"
 #include "fluid/communicator.hpp"
@@ -19,17 +21,23 @@ namespace slide::tools {
 template <int D>
 class ObserverCopy : public StepObserver<D> {
  public:
-  // copy and outputs: the first process's; null on the others.
-  ObserverCopy(const Communicator& world, Simulation<D>* copy, RunOutputs<D>* outputs)
-      : world_(&world), copy_(copy), outputs_(outputs) {}
+  // What reads the copy after a step (the outputs, the checkpoints), and whether it will after the step at time t.
+  struct Reader {
+    std::function<bool(double)> due;
+    StepObserver<D>* observer;
+  };
+  // copy and readers: the first process's; null and none on the others.
+  ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers)
+      : world_(&world), copy_(copy), readers_(std::move(readers)) {}
 
-  // Every process: whether the outputs sample after this step (the first process knows), and then the copy first.
+  // Every process: whether any reader reads after this step (the first process knows), and then the copy first.
   void after_step(Simulation<D>& sim, double dt) override {
-    std::int64_t due = outputs_ && outputs_->due(sim.time()) ? 1 : 0;
+    std::int64_t due = 0;
+    for (const Reader& r : readers_) due = due || r.due(sim.time()) ? 1 : 0;
     world_->max(&due, 1);
     if (due == 0) return;
     gather(sim);
-    if (outputs_) outputs_->after_step(*copy_, dt);
+    for (const Reader& r : readers_) r.observer->after_step(*copy_, dt);
   }
 
   // Brings the copy to the running simulation's present state (every process calls it).
@@ -41,7 +49,7 @@ class ObserverCopy : public StepObserver<D> {
  private:
   const Communicator* world_;
   Simulation<D>* copy_;
-  RunOutputs<D>* outputs_;
+  std::vector<Reader> readers_;
 };
 
 }  // namespace slide::tools

@@ -366,8 +366,9 @@ class CheckpointObserver : public StepObserver<D> {
   CheckpointObserver(const PreparedRun<D>& run, RunOutputs<D>& outputs, const Simulation<D>& sim)
       : run_(run), outputs_(outputs), sim_(sim), interval_(run.scene->output.checkpoint_interval),
         next_(interval_ > 0 ? interval_ : std::numeric_limits<double>::infinity()) {}
+  bool due(double t) const { return interval_ > 0.0 && t >= next_ - 1e-12 * std::max(1.0, next_); }
   void after_step(Simulation<D>& sim, double) override {
-    if (interval_ <= 0.0 || sim.time() < next_ - 1e-12 * std::max(1.0, next_)) return;
+    if (!due(sim.time())) return;
     next_ += interval_;
     if (sim.time() >= next_) next_ = sim.time() + interval_;
     write();
@@ -526,38 +527,58 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
     if (!slide.floats_warning.empty()) std::cerr << "slide: warning: " << slide.floats_warning << "\n";
   if (const auto ended = settle_before_the_run(*run, args)) return *ended;
+  // A resumed run's state, whole on every process (before it is shared among them); the outputs' and checkpoints'
+  // state after it in the same stream, read by the process that writes them.
+  std::optional<StateReader> resumed_state;
+  if (run->resumed_from) {
+    try {
+      resumed_state.emplace(run->resumed_from->state);
+      sim.restore_state(*resumed_state);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "slide: --resume " << out.string() << ": " << e.what() << "; nothing was run\n";
+      return 2;
+    }
+  }
   std::optional<ProcessesOfRun<D>> processes;
   if (several) {
-    processes = distribute_run<D>(args, *resolved, sim);
+    processes = distribute_run<D>(args, cases::load_yaml_text(run->header.resolved_scene), sim);
     if (!processes) return 2;
   }
   const bool writes = !processes || processes->first();  // this process writes the outputs
-  // What the outputs read: the simulation, or on several processes the first's copy of it.
+  // What the outputs and checkpoints read: the simulation, or on several processes the first's copy of it.
   const Simulation<D>& whole = processes && processes->copy ? *processes->copy->simulation : sim;
   std::optional<RunOutputs<D>> outputs;
+  std::optional<CheckpointObserver<D>> checkpoints;
+  std::string refusal;  // of the resumed outputs' state, on the process that writes them
   if (writes) {
     std::filesystem::create_directories(out);
     // A new run in a folder an earlier run used: that run's checkpoint is not this run's to resume.
     std::error_code no_checkpoint;
     if (!run->resumed_from) std::filesystem::remove(checkpoint_path(out), no_checkpoint);
     outputs.emplace(*scene, whole, out, run->resumed_from.has_value());
-  }
-  if (processes)
-    processes->observer.emplace(*processes->world, processes->copy ? processes->copy->simulation.get() : nullptr,
-                                outputs ? &*outputs : nullptr);
-  // Several processes: no checkpoints yet (refused in run_command).
-  std::optional<CheckpointObserver<D>> checkpoints;
-  if (!processes) checkpoints.emplace(*run, *outputs, sim);
-  if (run->resumed_from) {
-    try {
-      StateReader in(run->resumed_from->state);
-      sim.restore_state(in);
-      outputs->restore_state(in);
-      checkpoints->restore(in);
-    } catch (const std::runtime_error& e) {
-      std::cerr << "slide: --resume " << out.string() << ": " << e.what() << "; nothing was run\n";
-      return 2;
+    checkpoints.emplace(*run, *outputs, whole);
+    if (resumed_state) {
+      try {
+        outputs->restore_state(*resumed_state);
+        checkpoints->restore(*resumed_state);
+      } catch (const std::runtime_error& e) {
+        refusal = e.what();
+      }
     }
+  }
+  std::int64_t refused = refusal.empty() ? 0 : 1;
+  if (processes) processes->world->max(&refused, 1);  // every process stops where the first does
+  if (refused != 0) {
+    if (!refusal.empty()) std::cerr << "slide: --resume " << out.string() << ": " << refusal << "; nothing was run\n";
+    return 2;
+  }
+  if (processes) {
+    std::vector<typename ObserverCopy<D>::Reader> readers;
+    if (writes)
+      readers = {{[&o = *outputs](double t) { return o.due(t); }, &*outputs},
+                 {[&c = *checkpoints](double t) { return c.due(t); }, &*checkpoints}};
+    processes->observer.emplace(*processes->world, processes->copy ? processes->copy->simulation.get() : nullptr,
+                                std::move(readers));
   }
   // The copy brought up to date (a collective on several processes: every one calls it at the same point).
   const auto gather = [&] {
@@ -661,9 +682,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
 
     if (result.outcome == AdvanceResult::Outcome::stopped) {
       // The checkpoint first: it records the series as a straight run has it, without the final snapshot below.
-      if (checkpoints) checkpoints->write();
       gather();
       if (writes) {
+        checkpoints->write();
         outputs->write_snapshot(whole.particles(), sim.time(), sim.step_count());
         outputs->flush();
       }
@@ -671,12 +692,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
       const std::string why = signal == 0 ? "stopped as --stop-at asked" : signal == SIGTERM ? "interrupted by SIGTERM"
                                                                                             : "interrupted by SIGINT";
       const std::string msg =
-          processes ? fmt::format("{} at t = {:.6g} s (step {}); final snapshot written (a run on several processes "
-                                  "writes no checkpoint yet: it cannot be resumed)",
-                                  why, sim.time(), sim.step_count())
-                    : fmt::format("{} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with "
-                                  "slide run --resume {}",
-                                  why, sim.time(), sim.step_count(), out.string());
+          fmt::format("{} at t = {:.6g} s (step {}); final snapshot and checkpoint written: continue with slide run "
+                      "--resume {} (on any number of processes)",
+                      why, sim.time(), sim.step_count(), out.string());
       write_run_json(signal == 0 ? "stopped" : "interrupted", msg, json::object());
       if (signal != 0 || !args.quiet) std::cerr << "\nslide: " << msg << "\n";
       return signal == 0 ? 0 : 128 + signal;
@@ -746,16 +764,6 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
 
 }  // namespace
 
-namespace {
-// What a run on several processes cannot do yet, named (empty: nothing in the arguments).
-std::string several_processes_refusal(const RunArguments& args) {
-  if (!args.world || args.world->size() == 1) return "";
-  if (!args.resume.empty()) return "--resume: a run on several processes cannot resume a checkpoint yet";
-  if (std::isfinite(args.stop_at)) return "--stop-at: a run on several processes writes no checkpoint yet";
-  return "";
-}
-}  // namespace
-
 int run_command(const RunArguments& args) {
   const auto setup_start = Clock::now();
   // The program's own memory (code, libraries, runtime) before any scene: what the particles cost is the peak above it.
@@ -765,10 +773,6 @@ int run_command(const RunArguments& args) {
     return 2;
   }
   if (args.threads > 0) set_thread_count(args.threads);
-  if (const std::string why = several_processes_refusal(args); !why.empty()) {
-    std::cerr << "slide: " << why << " (run on one process: without mpirun, or -np 1); nothing was run or written\n";
-    return 2;
-  }
   // The scene's dimension decides which simulation runs: from the scene file, or from the checkpoint's scene.
   std::optional<YAML::Node> resolved;
   std::optional<Checkpoint> checkpoint;
@@ -777,12 +781,6 @@ int run_command(const RunArguments& args) {
     resolved = resolve_or_report(args);
     if (!resolved) return 2;
     dimension = cases::scene_dimension(*resolved);
-    if (args.world && args.world->size() > 1 && (*resolved)["output"]["checkpoint_interval"].as<double>() > 0.0) {
-      std::cerr << "slide: invalid scene " << args.scene.string() << ": output.checkpoint_interval: a run on several "
-                << "processes writes no checkpoints yet: set it to 0 or run on one process; nothing was run or "
-                   "written\n";
-      return 2;
-    }
   } else {
     try {
       checkpoint = read_checkpoint(args.resume);

@@ -24,8 +24,8 @@ refused() {
 }
 refused bodies "a scene with rigid bodies cannot run on several processes yet" "$cases/floating_block_2d.yaml"
 refused implicit "method.viscous_scheme implicit cannot run on several processes yet" "$cases/hb_poiseuille_2d.yaml"
-refused checkpoints "output.checkpoint_interval" "$cases/dam_break_2d.yaml" --set output.checkpoint_interval=0.01
-refused stop_at "--stop-at" "$cases/dam_break_2d.yaml" --stop-at 0.01
+refused pore_water "pore water under frictional sediment" "$cases/grilli2017_granular_slide_2d.yaml" \
+  --set method.viscous_scheme=explicit
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# restart.sh SLIDE MPIEXEC OUT_DIR: the dam break to 0.05 s straight on one process, and stopped at 0.03 s (--stop-at,
+# which writes a checkpoint) on STOP processes and resumed (--resume) on RESUME processes, for STOP/RESUME 3/2 and 1/3:
+# every file but run.json the same byte for byte. The checkpoint is the run's state as one process holds it, whatever
+# the processes that wrote it.
+set -uo pipefail
+slide="$1" mpiexec="$2" out="$3"
+scene="$(dirname "$0")/../../cases/dam_break_2d.yaml"
+rm -rf "$out"
+mkdir -p "$out"
+"$slide" run "$scene" --out "$out/straight" --threads 1 --quiet --set end_time=0.05 || exit 1
+# on PROCESSES ARGS...: slide run ARGS on PROCESSES processes (1: without mpirun).
+on() {
+  local processes="$1"
+  shift
+  if [ "$processes" -eq 1 ]; then
+    "$slide" run "$@" --threads 1 --quiet
+  else
+    "$mpiexec" --oversubscribe -np "$processes" "$slide" run "$@" --threads 1 --quiet
+  fi
+}
+failed=0
+for pair in 3/2 1/3; do
+  stop="${pair%/*}" resume="${pair#*/}" run="$out/stopped_on_${stop}_resumed_on_${resume}"
+  on "$stop" "$scene" --out "$run" --set end_time=0.05 --stop-at 0.03 || { echo "FAIL: stop on $stop"; exit 1; }
+  [ -f "$run/checkpoint.bin" ] || { echo "FAIL: no checkpoint after the stop on $stop"; exit 1; }
+  on "$resume" --resume "$run" || { echo "FAIL: resume on $resume"; exit 1; }
+  same=0 differ=0
+  while IFS= read -r file; do
+    if cmp -s "$out/straight/$file" "$run/$file"; then same=$((same + 1)); else differ=$((differ + 1)); echo "differs: $file"; fi
+  done < <(cd "$out/straight" && find . -type f ! -name run.json | sort)
+  echo "stopped on $stop, resumed on $resume: $same files as the straight run's byte for byte, $differ differ"
+  if [ "$differ" -ne 0 ] || [ "$same" -lt 3 ]; then failed=1; fi
+done
+# SIGTERM to mpirun (what a scheduler sends before it kills a job): every process stops at the same step and the
+# checkpoint resumes, here on 2 processes, to the straight run's files (to 0.6 s; the stop falls where it falls).
+"$slide" run "$scene" --out "$out/straight_long" --threads 1 --quiet --set end_time=0.6 || exit 1
+run="$out/terminated_on_3_resumed_on_2"
+"$mpiexec" --oversubscribe -np 3 "$slide" run "$scene" --out "$run" --threads 1 --quiet --set end_time=0.6 &
+pid=$!
+for _ in $(seq 1 600); do [ -f "$run/run.json" ] && break; sleep 0.1; done
+sleep 1
+kill -TERM "$pid"
+wait "$pid"
+if ! grep -q '"status": "interrupted"' "$run/run.json" || [ ! -f "$run/checkpoint.bin" ]; then
+  echo "FAIL: SIGTERM to mpirun left no interrupted run with a checkpoint:"
+  grep '"message"' "$run/run.json"
+  exit 1
+fi
+echo "$(grep -m1 '"message"' "$run/run.json")"
+on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM"; exit 1; }
+same=0 differ=0
+while IFS= read -r file; do
+  if cmp -s "$out/straight_long/$file" "$run/$file"; then same=$((same + 1)); else differ=$((differ + 1)); echo "differs: $file"; fi
+done < <(cd "$out/straight_long" && find . -type f ! -name run.json | sort)
+echo "terminated on 3, resumed on 2: $same files as the straight run's byte for byte, $differ differ"
+if [ "$differ" -ne 0 ] || [ "$same" -lt 3 ]; then failed=1; fi
+exit "$failed"
