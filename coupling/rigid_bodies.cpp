@@ -223,16 +223,21 @@ std::vector<Vec<2>> RigidBodies<D>::outline_now(int b) const requires(D == 2) {
 }
 
 template <int D>
-void RigidBodies<D>::add_dry_face_pressure(const Particles<D>& P, const NeighborGrid<D>& grid,
+void RigidBodies<D>::add_dry_face_pressure(const Domain<D>& domain, const NeighborGrid<D>& grid,
                                            const PorePressureField<D>& pore, double dp) {
   if constexpr (D == 2) {
     if (!pore.surface) return;
+    std::vector<std::array<ExactSum, 3>> sums(size());
+    const auto mine = [&](const Vec<2>& x) { return domain.owns_point(x, grid); };
     for (std::size_t b = 0; b < size(); ++b) {
       const auto st = world.state(int(b));
-      const ForceAndTorque f =
-          dry_face_pressure(outline_now(int(b)), int(b), Vec<2>(st.position[0], st.position[1]), P, grid, pore, dp);
-      pending_[b].pressure += f.force;
-      pending_[b].pressure_torque += f.torque;
+      add_dry_face_samples(outline_now(int(b)), int(b), Vec<2>(st.position[0], st.position[1]), domain.particles, grid,
+                           pore, dp, mine, sums[b]);
+    }
+    domain.combine(sums.empty() ? nullptr : sums.front().data(), 3 * sums.size());
+    for (std::size_t b = 0; b < size(); ++b) {
+      pending_[b].pressure += Vec<2>(sums[b][0].value(), sums[b][1].value());
+      pending_[b].pressure_torque += sums[b][2].value();
     }
   }
 }

@@ -121,9 +121,9 @@ class RigidBodies {
   void add_collision_forces(const Domain<D>& domain, const NeighborList& nl, double distance, double restitution,
                             double volume, double dt);
   // The water's pressure on the faces that rest on a wall under water, where no fluid particle reaches: beside the pair
-  // terms above, called with them (coupling/dry_face_pressure.hpp). `grid` bins P's positions. 2-D so far: in 3-D a
+  // terms above, called with them (coupling/dry_face_pressure.hpp). `grid` bins the domain's particles. 2-D so far: in 3-D a
   // body's faces resting on walls get no such pressure (the faces are polygons there: not written yet).
-  void add_dry_face_pressure(const Particles<D>& P, const NeighborGrid<D>& grid, const PorePressureField<D>& pore,
+  void add_dry_face_pressure(const Domain<D>& domain, const NeighborGrid<D>& grid, const PorePressureField<D>& pore,
                              double dp);
 
   // Mean fluid and contact forces since the last call (time-weighted over the steps in between), for outputs:

@@ -115,9 +115,7 @@ void Simulation<D>::check_processes(int processes) const {
   const auto refuse = [](const std::string& what) {
     throw std::invalid_argument(what + " cannot run on several processes yet: run it on one (without mpirun)");
   };
-  if (bodies_) refuse("a scene with rigid bodies");
   if (options.viscous_scheme == ViscousScheme::implicit) refuse("method.viscous_scheme implicit");
-  if (pore_water_) refuse("a scene with pore water under frictional sediment (method.pore_pressure)");
   if (static_cast<std::size_t>(processes) > grid_.total_cells())
     throw std::invalid_argument(fmt::format("{} processes for a neighbour grid of {} cells (each process needs at least "
                                             "one): start fewer processes", processes, grid_.total_cells()));
@@ -525,7 +523,8 @@ template <int D>
 void Simulation<D>::update_water_surface() {
   if (!pore_water_) return;
   const auto& P = domain_.particles;
-  water_surface_.build(P, options.gravity, options.dp, [&](std::size_t i) { return P.phase[i] == 0; });
+  water_surface_.build(P, options.gravity, options.dp, [&](std::size_t i) { return P.phase[i] == 0; },
+                       domain_.distributed() ? domain_.communicator() : nullptr);
 }
 
 template <int D>
@@ -630,7 +629,7 @@ void Simulation<D>::correct_with_pressure_gradient(double dt) {
   });
   if (bodies_) {
     bodies_->add_pressure_forces(domain_, list_, model, r_e, lattice.n0, lattice.kappa, particle_volume());
-    bodies_->add_dry_face_pressure(P, grid_, pore_pressure_field(), options.dp);
+    bodies_->add_dry_face_pressure(domain_, grid_, pore_pressure_field(), options.dp);
   }
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;

@@ -90,6 +90,9 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
   last_viscous_solve_ = running.last_viscous_solve_;
   options.velocity_damping_rate = running.options.velocity_damping_rate;
   rheology_suspended_ = running.rheology_suspended_;
+  // The bodies are the same on every process (each steps its own copy of the rigid world with the same combined
+  // forces): the copy reads the running simulation's.
+  if (bodies_ || running.bodies_) bodies_ = running.bodies_;
 }
 
 template std::vector<unsigned char> Simulation<2>::owned_state_bytes() const;

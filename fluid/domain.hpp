@@ -230,25 +230,36 @@ class Domain {
       for (std::size_t k = 0; k < K; ++k) sums[static_cast<std::size_t>(g)][k].add(v[k]);
     }
     std::vector<std::array<double, K>> out(groups);
-    if (distributed()) {  // the digits of every process's partial sums, summed: exact, whatever the split
-      constexpr std::size_t n = ExactSum::digit_count;
-      std::vector<std::int64_t> digits(groups * K * n);
-      for (std::size_t g = 0; g < groups; ++g)
-        for (std::size_t k = 0; k < K; ++k) {
-          const auto& d = sums[g][k].normalised_digits();
-          std::copy(d.begin(), d.end(), digits.begin() + static_cast<std::ptrdiff_t>((g * K + k) * n));
-        }
-      comm_->sum(digits.data(), digits.size());
-      for (std::size_t g = 0; g < groups; ++g)
-        for (std::size_t k = 0; k < K; ++k) {
-          std::array<std::int64_t, n> d;
-          std::copy_n(digits.begin() + static_cast<std::ptrdiff_t>((g * K + k) * n), n, d.begin());
-          sums[g][k] = ExactSum::from_digits(d);
-        }
-    }
+    combine(sums.empty() ? nullptr : sums.front().data(), groups * K);
     for (std::size_t g = 0; g < groups; ++g)
       for (std::size_t k = 0; k < K; ++k) out[g][k] = sums[g][k].value();
     return out;
+  }
+
+  // Several processes: each of the `count` exact sums becomes the sum of every process's (the digits summed: exact,
+  // whatever the split). One process: unchanged.
+  void combine(ExactSum* sums, std::size_t count) const {
+    if (!distributed()) return;
+    const Stopwatch watch(cost_.reduction_seconds);
+    constexpr std::size_t n = ExactSum::digit_count;
+    std::vector<std::int64_t> digits(count * n);
+    for (std::size_t s = 0; s < count; ++s) {
+      const auto& d = sums[s].normalised_digits();
+      std::copy(d.begin(), d.end(), digits.begin() + static_cast<std::ptrdiff_t>(s * n));
+    }
+    comm_->sum(digits.data(), digits.size());
+    for (std::size_t s = 0; s < count; ++s) {
+      std::array<std::int64_t, n> d;
+      std::copy_n(digits.begin() + static_cast<std::ptrdiff_t>(s * n), n, d.begin());
+      sums[s] = ExactSum::from_digits(d);
+    }
+  }
+
+  // Whether this process owns the cell of the grid that `point` lies in (one process: every cell). A quantity summed
+  // over points of space rather than particles (a body face's samples) is summed by the owner of each point's cell,
+  // whose ghosts hold every particle within a cell of it.
+  bool owns_point(const Vec<D>& point, const NeighborGrid<D>& grid) const {
+    return !distributed() || halo_.owner(grid.linear(grid.cell_of(point))) == comm_->rank();
   }
 
  private:

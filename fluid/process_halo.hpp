@@ -88,7 +88,6 @@ class ProcessHalo {
     for (std::size_t i = 0; i < P.size(); ++i) {
       const int r = owner_of(P.position[i], grid);
       if (r == self) continue;
-      if (P.body_frame[i] >= 0) throw std::logic_error("a body particle cannot move to another process yet");
       leaving[i] = 1;
       append_record(P, i, out[static_cast<std::size_t>(r)]);
     }

@@ -19,6 +19,7 @@
 #include <limits>
 #include <vector>
 
+#include "fluid/communicator.hpp"
 #include "fluid/particles.hpp"
 
 namespace slide {
@@ -26,9 +27,11 @@ namespace slide {
 template <int D>
 class WaterSurface {
  public:
-  // From the real fluid particles for which is_water(i) holds; `gravity` non-zero.
+  // From the real fluid particles for which is_water(i) holds; `gravity` non-zero. On several processes (comm), from
+  // every process's: the columns' extent and their highest water are maxima across them, the same on each.
   template <class IsWater>
-  void build(const Particles<D>& P, const Vec<D>& gravity, double dp, IsWater&& is_water) {
+  void build(const Particles<D>& P, const Vec<D>& gravity, double dp, IsWater&& is_water,
+             const Communicator* comm = nullptr) {
     set_axes(gravity);
     width_ = dp;
     const std::size_t n = P.real_count();
@@ -41,6 +44,14 @@ class WaterSurface {
       const auto c = column(P.position[i]);
       for (int k = 0; k < D - 1; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
       any = true;
+    }
+    if (comm) {
+      std::array<std::int64_t, 2 * (D - 1) + 1> v;
+      for (int k = 0; k < D - 1; ++k) v[k] = -lo[k], v[D - 1 + k] = hi[k];
+      v[2 * (D - 1)] = any ? 1 : 0;
+      comm->max(v.data(), v.size());
+      for (int k = 0; k < D - 1; ++k) lo[k] = -v[k], hi[k] = v[D - 1 + k];
+      any = v[2 * (D - 1)] != 0;
     }
     top_.clear();
     if (!any) return;
@@ -55,6 +66,7 @@ class WaterSurface {
       double& t = own[index(column(P.position[i]))];
       t = std::max(t, height(P.position[i]) + 0.5 * dp);
     }
+    if (comm) comm->max(own.data(), own.size());
     top_.assign(cells, none);
     for (std::size_t c = 0; c < cells; ++c) {
       const auto at = unindex(c);
