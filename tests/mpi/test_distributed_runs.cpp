@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iostream>
 #include <numeric>
 #include <tuple>
 #include <string>
 #include <vector>
 
+#include "coupling/rigid_bodies.hpp"
 #include "tests/mpi/world.hpp"
 #include "tests/scene_runner.hpp"
 
@@ -136,6 +138,59 @@ TEST(Processes, DamBreakIn3DIsTheSame) {
 TEST(Processes, DamBreakBetweenPlanesOfSymmetryIn3DIsTheSame) {
   expect_split_changes_nothing<3>("dam_break_bench_3d.yaml", {"output.snapshots=false", "particle_spacing=0.02"},
                                   0.02);
+}
+
+// A rigid wedge sliding down the slope into the water (the subaerial Heinrich-type case, coarse: dp 0.04 m, settled
+// for 0.2 s, then 1.2 s of sliding), shared among the processes after it settled as `slide run` shares it
+// (Simulation::distribute): each process sums the forces of the boundary particles it owns, every process steps the
+// same rigid world, and the particles and the wedge's pose end the same to the bit as on one. Every 25 steps the set
+// of processes owning some of its particles is recorded: on 4 processes the cuts fall across its path and its
+// particles go from process 1 to processes 0 and 1 to process 0 (measured), which the test requires; on 2 and 3 its
+// whole path lies in process 0's cells.
+TEST(Processes, ASlidingWedgeCrossesProcessesAndStaysTheSame) {
+  const Communicator& comm = *world();
+  const std::vector<std::string> overrides{"particle_spacing=0.04", "method.settling_time=0.2",
+                                           "output.snapshots=false"};
+  const auto run = [&](std::shared_ptr<const Communicator> processes, std::vector<std::vector<std::int64_t>>& owners) {
+    auto scene = load_shipped_scene<2>("heinrich_wedge_subaerial_2d.yaml", overrides);
+    Simulation<2>& sim = *scene->simulation;
+    sim.distribute(processes);
+    const auto record_owners = [&](const Simulation<2>& s) {
+      std::vector<std::int64_t> owns(static_cast<std::size_t>(processes->size()), 0);
+      for (std::size_t i = 0; i < s.particles().real_count(); ++i)
+        if (s.particles().body_frame[i] >= 0) owns[static_cast<std::size_t>(processes->rank())] = 1;
+      processes->sum(owns.data(), owns.size());
+      if (owners.empty() || owners.back() != owns) owners.push_back(owns);
+    };
+    record_owners(sim);
+    EXPECT_TRUE(run_scene<2>(*scene, [&](const Simulation<2>& s) { if (s.step_count() % 25 == 0) record_owners(s); },
+                             1.2));
+    const auto body = sim.bodies()->state(0);
+    return std::tuple{gather_by_id<2>(sim, *processes), sim.step_count(), body.position[0], body.position[1],
+                      body.angle};
+  };
+  std::vector<std::vector<std::int64_t>> alone, owners;
+  const auto [one, one_steps, one_x, one_y, one_angle] = run(std::make_shared<SerialCommunicator>(), alone);
+  const auto [split, steps, x, y, angle] = run(world(), owners);
+  EXPECT_EQ(steps, one_steps);
+  EXPECT_EQ(x, one_x);
+  EXPECT_EQ(y, one_y);
+  EXPECT_EQ(angle, one_angle);
+  EXPECT_GT(one_x, 0.0);
+  if (comm.size() > 1) {
+    if (comm.size() >= 4) EXPECT_GE(owners.size(), 3u) << "the wedge's particles did not cross between processes";
+    std::string seen;
+    for (const auto& o : owners) {
+      seen += "[";
+      for (const auto v : o) seen += std::to_string(v);
+      seen += "]";
+    }
+    if (comm.rank() == 0) std::cout << "processes owning the wedge's particles as it slid: " << seen << "\n";
+  }
+  if (comm.rank() != 0) return;
+  ASSERT_EQ(split.id, one.id);
+  EXPECT_EQ(0, std::memcmp(split.numbers.data(), one.numbers.data(), one.numbers.size() * sizeof(double)))
+      << "on " << comm.size() << " processes";
 }
 
 }  // namespace
