@@ -52,16 +52,39 @@ double peak_resident_bytes() {
 }  // namespace
 namespace {
 std::streambuf* own_stderr = nullptr;  // where standard error went before keep_quiet
+std::stringbuf held_stderr;             // what a quiet process said since
 }  // namespace
 
 void keep_quiet() {
-  if (!own_stderr) own_stderr = std::cerr.rdbuf(nullptr);
+  if (!own_stderr) own_stderr = std::cerr.rdbuf(&held_stderr);
 }
 void speak_up() {
   if (own_stderr) std::cerr.rdbuf(own_stderr);
   std::cerr.clear();
   own_stderr = nullptr;
 }
+
+namespace {
+// Several processes: whether any refused (exit 2) at this point of a run's preparation, agreed by all (a process that
+// went on alone would wait for the others for ever). What the first process refuses it has said; a refusal of another
+// process alone (a file it cannot read: the run's folder is not shared) it says now, with its number.
+bool refused_anywhere(const RunArguments& args, bool refused_here) {
+  if (!args.world || args.world->size() == 1) return refused_here;
+  const auto& world = *args.world;
+  std::vector<std::int64_t> refused(static_cast<std::size_t>(world.size()), 0);
+  refused[static_cast<std::size_t>(world.rank())] = refused_here ? 1 : 0;
+  world.sum(refused.data(), refused.size());
+  if (refused_here && world.rank() > 0 && refused[0] == 0) {
+    const std::string said = held_stderr.str();
+    speak_up();
+    std::cerr << "slide: process " << world.rank() << " of " << world.size() << " (its files are not the first's: is "
+              << "the folder shared by every process?): " << (said.rfind("slide: ", 0) == 0 ? said.substr(7) : said);
+    keep_quiet();
+  }
+  held_stderr.str("");
+  return std::any_of(refused.begin(), refused.end(), [](std::int64_t r) { return r != 0; });
+}
+}  // namespace
 
 namespace {
 
@@ -272,7 +295,8 @@ std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const st
   PreparedRun<D> run;
   run.out = args.out.empty() ? std::filesystem::path("runs") / (name.empty() ? args.scene.stem().string() : name)
                              : args.out;
-  if (const auto why = output_folder_problem(run.out)) {
+  const bool writes = !args.world || args.world->rank() == 0;  // the others write nothing (tools/observer_copy.hpp)
+  if (const auto why = writes ? output_folder_problem(run.out) : std::nullopt) {
     std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
     return std::nullopt;
   }
@@ -503,7 +527,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
               Clock::time_point setup_start, double resident_bytes_at_start) {
   std::optional<PreparedRun<D>> run =
       checkpoint ? prepare_resumed_run<D>(args, std::move(*checkpoint)) : prepare_new_run<D>(args, resolved);
-  if (!run) return 2;
+  if (refused_anywhere(args, !run)) return 2;
   const bool several = args.world && args.world->size() > 1;
   if (several) {  // before it settles
     try {
@@ -777,22 +801,24 @@ int run_command(const RunArguments& args) {
   std::optional<YAML::Node> resolved;
   std::optional<Checkpoint> checkpoint;
   int dimension = 2;
+  bool refused = false;  // on several processes, every one reads the files (refused_anywhere)
   if (args.resume.empty()) {
     resolved = resolve_or_report(args);
-    if (!resolved) return 2;
-    dimension = cases::scene_dimension(*resolved);
+    refused = !resolved;
+    if (resolved) dimension = cases::scene_dimension(*resolved);
   } else {
     try {
       checkpoint = read_checkpoint(args.resume);
       dimension = cases::scene_dimension(cases::load_yaml_text(checkpoint->header.resolved_scene));
     } catch (const CheckpointError& e) {
       std::cerr << "slide: --resume " << args.resume.string() << ": " << e.what() << "; nothing was run or written\n";
-      return 2;
+      refused = true;
     } catch (const std::exception&) {
       if (!checkpoint) throw;  // not the scene's text: what read_checkpoint threw goes on as it did
       dimension = 2;  // a scene the checkpoint cannot give back: prepare_resumed_run says why
     }
   }
+  if (refused_anywhere(args, refused)) return 2;
   return dimension == 3 ? run_scene<3>(args, resolved, std::move(checkpoint), setup_start, resident_bytes_at_start)
                         : run_scene<2>(args, resolved, std::move(checkpoint), setup_start, resident_bytes_at_start);
 }

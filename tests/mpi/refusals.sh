@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # refusals.sh SLIDE MPIEXEC OUT_DIR: what a run on several processes refuses (exit 2, nothing written, one message
-# naming why), and a process that fails alone (a full disk) stopping all of them with its message and exit 1.
+# naming why), a folder one process cannot read, and a process that fails alone (a full disk) stopping all of them
+# with its message and exit 1.
 set -uo pipefail
-slide="$1" mpiexec="$2" out="$3"
-cases="$(dirname "$0")/../../cases"
+slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
+cases="$(realpath "$(dirname "$0")/../../cases")"
 rm -rf "$out"
 mkdir -p "$out"
 failed=0
@@ -22,10 +23,24 @@ refused() {
     echo "ok $name: $(grep -m1 -- "$expected" "$out/$name.log")"
   fi
 }
-refused bodies "a scene with rigid bodies cannot run on several processes yet" "$cases/floating_block_2d.yaml"
 refused implicit "method.viscous_scheme implicit cannot run on several processes yet" "$cases/hb_poiseuille_2d.yaml"
-refused pore_water "pore water under frictional sediment" "$cases/grilli2017_granular_slide_2d.yaml" \
-  --set method.viscous_scheme=explicit
+# A run folder not shared by every process: a checkpoint the first process reads and the second cannot (each started
+# in its own folder, the run's given relative to it). Every process exits 2, the second says why, and the run's files
+# are left as they were.
+mkdir -p "$out/first" "$out/second"
+(cd "$out/first" && "$slide" run "$cases/dam_break_2d.yaml" --out run --threads 1 --quiet --set end_time=0.05 \
+  --stop-at 0.02) || { echo "FAIL: the stopped run for the unshared folder"; failed=1; }
+timeout 120 "$mpiexec" --oversubscribe -np 1 --wdir "$out/first" "$slide" run --resume run --threads 1 : \
+  -np 1 --wdir "$out/second" "$slide" run --resume run --threads 1 >"$out/unshared.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || ! grep -q "process 1 of 2 .*is the folder shared by every process" "$out/unshared.log" ||
+  ! grep -q '"status": "stopped"' "$out/first/run/run.json"; then
+  echo "FAIL unshared: exit $code (expected 2):"
+  cat "$out/unshared.log"
+  failed=1
+else
+  echo "ok unshared: $(grep -m1 "process 1 of 2" "$out/unshared.log")"
+fi
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
