@@ -112,10 +112,6 @@ void Simulation<D>::initialise() {
 template <int D>
 void Simulation<D>::check_processes(int processes) const {
   if (processes <= 1) return;
-  const auto refuse = [](const std::string& what) {
-    throw std::invalid_argument(what + " cannot run on several processes yet: run it on one (without mpirun)");
-  };
-  if (options.viscous_scheme == ViscousScheme::implicit) refuse("method.viscous_scheme implicit");
   if (static_cast<std::size_t>(processes) > grid_.total_cells())
     throw std::invalid_argument(fmt::format("{} processes for a neighbour grid of {} cells (each process needs at least "
                                             "one): start fewer processes", processes, grid_.total_cells()));
@@ -145,16 +141,26 @@ void Simulation<D>::distribute(std::shared_ptr<const Communicator> comm) {
   if (!domain_.distributed()) return;
   prepare_processes();
   auto& P = domain_.particles;
+  // The corrected gradient's matrices of the last pressure stage go along too (the semi-implicit predictor reads them).
+  const bool correction = correction_current_;
   std::vector<Vec<D>> now_by_id(P.id_end());
+  std::vector<Mat<D>> correction_by_id(correction ? P.id_end() : 0);
   for (std::size_t i = 0; i < P.real_count(); ++i) {
     now_by_id[P.id[i]] = P.position[i];
     P.position[i] = position_at_build_[i];
+    if (correction) correction_by_id[P.id[i]] = P.gradient_correction[i];
   }
   update_neighbors(true);
   --rebuilds_;  // a re-sort one process does not make: run.json counts as one process
   for (std::size_t i = 0; i < P.real_count(); ++i) P.position[i] = now_by_id[P.id[i]];
   domain_.refresh({HaloField::motion, HaloField::number_density, HaloField::pressure, HaloField::viscosity,
                    HaloField::wall_fraction, HaloField::wall_fill, HaloField::wall_normal});
+  if (correction) {
+    P.gradient_correction.resize(P.size());
+    for (std::size_t i = 0; i < P.real_count(); ++i) P.gradient_correction[i] = correction_by_id[P.id[i]];
+    domain_.refresh({HaloField::gradient_correction});
+    correction_current_ = true;
+  }
   scratch_.resize(P.size(), Vec<D>::Zero());
 }
 

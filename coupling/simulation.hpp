@@ -172,8 +172,8 @@ class Simulation {
   // owned_state_bytes one after another, and the running simulation's time and counters; afterwards the particles are
   // stored, given ghosts and a neighbour list as one process would hold them at this step (by cell of the positions of
   // the last re-sort, by id within a cell), so that every output reads the same numbers in the same order as one
-  // process's run. The corrected gradient's matrices are not carried (no output reads them); the rigid bodies are the
-  // running simulation's own (shared).
+  // process's run, the corrected gradient's matrices of the last pressure stage included (a checkpoint holds them);
+  // the rigid bodies are the running simulation's own (shared).
   std::vector<unsigned char> owned_state_bytes() const;
   void adopt_whole_state(const std::vector<unsigned char>& gathered, const Simulation& running);
 

@@ -14,9 +14,11 @@ std::vector<unsigned char> Simulation<D>::owned_state_bytes() const {
   out.reserve(2 * sizeof(std::uint64_t) + n * (ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>)));
   halo_bytes::put<std::uint64_t>(out, n);
   halo_bytes::put<std::uint64_t>(out, left_the_domain_.size());
+  halo_bytes::put<std::uint8_t>(out, correction_current_ ? 1 : 0);
   for (std::size_t i = 0; i < n; ++i) {
     ProcessHalo<D>::append_record(P, i, out);
     halo_bytes::put(out, position_at_build_[i]);
+    if (correction_current_) halo_bytes::put(out, P.gradient_correction[i]);
   }
   for (const LeftParticle& l : left_the_domain_) {
     halo_bytes::put(out, l.id);
@@ -36,11 +38,14 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
   P.gradient_correction.clear();
   position_at_build_.clear();
   left_the_domain_.clear();
+  bool correction = false;  // the same on every process
   for (const unsigned char *in = gathered.data(), *end = in + gathered.size(); in < end;) {
     const auto n = halo_bytes::get<std::uint64_t>(in), left = halo_bytes::get<std::uint64_t>(in);
+    correction = halo_bytes::get<std::uint8_t>(in) != 0;
     for (std::uint64_t k = 0; k < n; ++k) {
       ProcessHalo<D>::read_record(P, in);
       position_at_build_.push_back(halo_bytes::get<Vec<D>>(in));
+      if (correction) P.gradient_correction.push_back(halo_bytes::get<Mat<D>>(in));
     }
     for (std::uint64_t k = 0; k < left; ++k) {
       LeftParticle l;
@@ -65,6 +70,10 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
   const std::vector<std::uint32_t>& order = grid_.sorted_indices();
   std::vector<Vec<D>> now_sorted(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) now_sorted[k] = now[order[k]];
+  if (correction) {
+    const std::vector<Mat<D>> gathered_correction = P.gradient_correction;
+    for (std::size_t k = 0; k < order.size(); ++k) P.gradient_correction[k] = gathered_correction[order[k]];
+  }
   scratch_.resize(P.size(), Vec<D>::Zero());
   P.reorder(order, scratch_);
   if (domain_.make_ghosts(list_radius())) {
@@ -78,8 +87,12 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
   std::copy(now_sorted.begin(), now_sorted.end(), P.position.begin());
   domain_.refresh({HaloField::motion, HaloField::number_density, HaloField::pressure, HaloField::viscosity,
                    HaloField::wall_fraction, HaloField::wall_fill, HaloField::wall_normal});
+  if (correction) {
+    P.gradient_correction.resize(P.size());
+    domain_.refresh({HaloField::gradient_correction});
+  }
   pair_weights_.forget();
-  correction_current_ = false;
+  correction_current_ = correction;
   time_ = running.time_;
   step_count_ = running.step_count_;
   limit_counts_ = running.limit_counts_;

@@ -22,13 +22,17 @@ struct ConjugateGradientReport {
 
 // Solves A x = b from the guess in x (n = b.size() rows). product(p, y) sets y = A p; inverse_diagonal holds 1 / A_rr
 // (1 where A_rr is 0, as Eigen's DiagonalPreconditioner).
-template <class Product>
+// combine(sum): several processes, each holding some of the rows: makes a dot product's exact partial sum the sum over
+// every process's (Domain::combine); every process then takes the same steps.
+template <class Product, class Combine>
 ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<double>& inverse_diagonal,
                                            const std::vector<double>& b, std::vector<double>& x, double tolerance,
-                                           int max_iterations) {
+                                           int max_iterations, Combine&& combine) {
   const std::size_t n = b.size();
-  auto dot = [n](const std::vector<double>& u, const std::vector<double>& v) {
-    return parallel_exact_sum(n, [&](std::size_t i) { return u[i] * v[i]; });
+  auto dot = [n, &combine](const std::vector<double>& u, const std::vector<double>& v) {
+    ExactSum sum = parallel_exact_sum_unrounded(n, [&](std::size_t i) { return u[i] * v[i]; });
+    combine(sum);
+    return sum.value();
   };
   ConjugateGradientReport report;
   const double b_norm2 = dot(b, b);
@@ -68,6 +72,15 @@ ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<
   report.error = std::sqrt(r_norm2 / b_norm2);
   report.converged = report.error <= tolerance;
   return report;
+}
+
+// One process: all the rows.
+template <class Product>
+ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<double>& inverse_diagonal,
+                                           const std::vector<double>& b, std::vector<double>& x, double tolerance,
+                                           int max_iterations) {
+  return conjugate_gradient(std::forward<Product>(product), inverse_diagonal, b, x, tolerance, max_iterations,
+                            [](ExactSum&) {});
 }
 
 }  // namespace slide

@@ -255,6 +255,23 @@ class Domain {
     }
   }
 
+  // A stage's own per-particle array (not one of the particles'), its owned entries carried to the ghosts as a
+  // field's are (vectors turned as the image turns them).
+  template <class T>
+  void refresh_values(std::vector<T>& v) {
+    if (!distributed()) {
+      copy_to_ghosts(particles, v);
+      return;
+    }
+    const Stopwatch watch(cost_.halo_seconds);
+    halo_.refresh(particles, v, *comm_);
+  }
+  // The sum of `mine` over the processes (one process: mine).
+  std::int64_t sum_over_processes(std::int64_t mine) const {
+    if (distributed()) comm_->sum(&mine, 1);
+    return mine;
+  }
+
   // Whether this process owns the cell of the grid that `point` lies in (one process: every cell). A quantity summed
   // over points of space rather than particles (a body face's samples) is summed by the owner of each point's cell,
   // whose ghosts hold every particle within a cell of it.

@@ -43,7 +43,7 @@
 // implicit answer on every row: within the solver's tolerance. Non-stiff rows are thereby updated explicitly
 // (u* = u + dt (a + a_visc(u~))) at s_i <= eps, 1/eps inside the explicit stability limit; the stiff rows implicitly
 // as before. Momentum stays exact (the same pair terms, at u~, go both ways).
-#include <Eigen/SparseCore>
+#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -124,50 +124,48 @@ class ImplicitViscosity {
   double tolerance = 1e-8;    // relative residual
   int max_iterations = 500;
 
-  // Fluid particles with viscous_row_number above this are unknowns (header): sqrt(tolerance), so that the others'
-  // explicit treatment changes the step's result by O(tolerance).
   double stiff_row_number() const { return std::sqrt(tolerance); }
 
-  // Replaces P.velocity of every fluid particle, periodic ghosts included, by u~ (above): the solution on the stiff
-  // rows, u_i + dt a_i on the others; `explicit_acceleration` holds a_i for real fluid particles. Fills
-  // `viscous_acceleration` (resized to P.size() if smaller) with the explicit viscous acceleration at u~ for every
-  // real fluid particle, equal to viscous_acceleration (fluid/viscosity.hpp) evaluated after the solve: computed in
-  // the walk that classifies the rows, and again after the solve only where a stiff particle is a neighbour.
-  // Positions are not moved; particles other than fluid keep their velocities.
+  // Several processes (fluid/domain.hpp): each holds the rows of its own unknowns; a row's columns are unknowns of any
+  // process, read through the ghosts, and the solver's dot products are exact sums combined across processes, so the
+  // solution is the same to the bit on any number of processes.
   template <int D>
   ViscousSolveReport solve(Domain<D>& domain, const NeighborList& nl, double re, double n0, double lambda,
                            const ViscousWall& wall, double dt, const std::vector<Vec<D>>& explicit_acceleration,
                            std::vector<Vec<D>>& viscous_acceleration);
 
-  std::size_t unknowns() const { return particle_of_.size(); }  // of the last solve
+  std::size_t unknowns() const { return particle_of_.size(); }  // of the last solve, this process's
 
  private:
-  using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-  std::vector<std::uint8_t> stiff_;  // particle -> 1: an unknown
-  std::vector<std::uint8_t> near_stiff_;  // particle -> 1: an unknown or a fluid neighbour of one
-  std::vector<int> row_of_;        // particle -> unknown (-1: not an unknown)
-  std::vector<std::uint32_t> particle_of_;  // unknown -> particle
+  std::vector<std::uint8_t> stiff_;  // particle (owned and ghost) -> 1: an unknown
+  std::vector<std::uint8_t> planes_;  // particle (owned and ghost) -> the axes of the planes of symmetry it lies on
+  std::vector<std::uint8_t> near_stiff_;  // owned particle -> 1: an unknown or a fluid neighbour of one
+  std::vector<std::uint32_t> particle_of_;  // unknown (row) -> owned particle
   std::vector<int> row_start_;
-  std::vector<int> diagonal_at_;      // unknown -> its diagonal's place in the values
-  std::vector<std::uint8_t> flip_;    // per stored value: the axes its image negates (0: a real neighbour's)
-  std::vector<std::array<double, 3>> own_image_;  // unknown -> the diagonal's share from its own images, per axis
-  std::vector<std::uint8_t> on_planes_;  // unknown -> the axes of the planes of symmetry it lies on
-  Matrix matrix_;  // compressed row storage, filled in place
-  Matrix component_;  // the matrix of one velocity component, where images flip it
+  std::vector<int> diagonal_at_;      // row -> its diagonal's place in the values
+  // Per stored value: the particle (owned or ghost) whose unknown it multiplies, that unknown's id (the values of a
+  // row are in id order), the axes its image negates (0: not an image).
+  std::vector<std::uint32_t> entry_particle_;
+  std::vector<ParticleId> entry_id_;
+  std::vector<std::uint8_t> flip_;
+  std::vector<std::array<double, 3>> own_image_;  // row -> the diagonal's share from its own images, per axis
+  std::vector<std::uint8_t> on_planes_;  // row -> the axes of the planes of symmetry its particle lies on
+  std::vector<double> values_;            // the rows, compressed
+  std::vector<double> component_values_;  // of one velocity component, where images flip it
+  std::vector<double> p_of_particle_;     // the solver's search direction at every particle (ghosts: their unknown's)
 
-  // The matrix of velocity component d: matrix_ with the values of images flipped along d negated, and each row's own
-  // images added to its diagonal; matrix_ itself without images.
-  const Matrix& matrix_of(int d, bool images);
+  // The values of velocity component d: values_ with the values of images flipped along d negated, and each row's own
+  // images added to its diagonal; values_ itself without images.
+  const std::vector<double>& values_of(int d, bool images);
 };
 
-inline const ImplicitViscosity::Matrix& ImplicitViscosity::matrix_of(int d, bool images) {
-  if (!images) return matrix_;
-  component_ = matrix_;
-  double* value = component_.valuePtr();
-  const int* column = component_.innerIndexPtr();
+inline const std::vector<double>& ImplicitViscosity::values_of(int d, bool images) {
+  if (!images) return values_;
+  component_values_ = values_;
+  double* value = component_values_.data();
   for (std::size_t k = 0; k < flip_.size(); ++k) {
     if (flip_[k] >> d & 1) value[k] = -value[k];
-    if (on_planes_[static_cast<std::size_t>(column[k])] >> d & 1) value[k] = 0.0;  // a velocity held at zero
+    if (planes_[entry_particle_[k]] >> d & 1) value[k] = 0.0;  // a velocity held at zero
   }
   for (std::size_t r = 0; r < own_image_.size(); ++r) {
     const int first = row_start_[r], last = row_start_[r + 1];
@@ -181,7 +179,7 @@ inline const ImplicitViscosity::Matrix& ImplicitViscosity::matrix_of(int d, bool
     const double share = std::ldexp(1.0, -std::popcount(on_planes_[r]));
     for (int k = first; k < last; ++k) value[k] *= share;
   }
-  return component_;
+  return component_values_;
 }
 
 template <int D>
@@ -197,84 +195,85 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
     if (P.kind[i] == Kind::fluid) P.velocity[i] += dt * explicit_acceleration[i];
   });
   domain.refresh({HaloField::velocity});
-  // Unknowns: the stiff real fluid particles (header). A periodic ghost (fluid/periodic.hpp) is its source's unknown.
-  // The same walk gives the viscous acceleration at u + dt a, which is that at u~ wherever no unknown is near.
+  // Unknowns: the stiff owned fluid particles (header); a ghost is its source's unknown. The same walk gives the
+  // viscous acceleration at u + dt a, which is that at u~ wherever no unknown is near.
   const double stiff = stiff_row_number();
-  stiff_.assign(n, 0);
+  stiff_.assign(P.size(), 0);
   parallel_for(n, [&](std::size_t i) {
     if (P.kind[i] != Kind::fluid) return;
     const ViscousRow<D> row = viscous_row<D>(i, P, nl, re, n0, lambda, wall, dt);
     stiff_[i] = row.number > stiff;
     viscous_acceleration[i] = row.acceleration;
   });
-  // Unknowns numbered in id order: a row's columns (sorted) and the solver's sums over rows then run in an order that
-  // does not depend on where the particles are stored (fluid/domain.hpp).
-  row_of_.assign(n, -1);
+  domain.refresh_values(stiff_);
+  // Rows in id order: a row's columns (sorted by id) and the solver's sums over rows then run in an order that does
+  // not depend on where the particles are stored (fluid/domain.hpp).
   particle_of_.clear();
   for (std::size_t i = 0; i < n; ++i)
     if (stiff_[i]) particle_of_.push_back(static_cast<std::uint32_t>(i));
   std::sort(particle_of_.begin(), particle_of_.end(), [&](std::uint32_t a, std::uint32_t b) { return P.id[a] < P.id[b]; });
-  for (std::size_t r = 0; r < particle_of_.size(); ++r) row_of_[particle_of_[r]] = static_cast<int>(r);
   const std::size_t rows = particle_of_.size();
   ViscousSolveReport report;
-  if (rows == 0) return report;
+  if (domain.sum_over_processes(static_cast<std::int64_t>(rows)) == 0) return report;
+  planes_.assign(P.size(), 0);
+  for (std::size_t i = 0; i < n; ++i) planes_[i] = domain.planes_holding(i);
+  domain.refresh_values(planes_);
   const double c = 2.0 * D / (lambda * n0);
 
-  // Row sizes: the diagonal and every neighbouring unknown within re.
   row_start_.assign(rows + 1, 0);
   parallel_for(rows, [&](std::size_t r) {
+    const std::size_t i = particle_of_[r];
     int count = 1;
-    auto fluid = [&](std::uint32_t j, double) {
-      count += row_of_[P.real_index(j)] >= 0 && P.real_index(j) != particle_of_[r];
-    };
-    for_each_viscous_coupling<D>(particle_of_[r], P, nl, re, wall, fluid, [](std::uint32_t, double) {});
+    auto fluid = [&](std::uint32_t j, double) { count += stiff_[j] && P.id[j] != P.id[i]; };
+    for_each_viscous_coupling<D>(i, P, nl, re, wall, fluid, [](std::uint32_t, double) {});
     row_start_[r + 1] = count;
   });
   for (std::size_t r = 0; r < rows; ++r) row_start_[r + 1] += row_start_[r];
-  matrix_.resize(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(rows));
-  matrix_.resizeNonZeros(row_start_[rows]);
-  std::copy(row_start_.begin(), row_start_.end(), matrix_.outerIndexPtr());
-  int* column = matrix_.innerIndexPtr();
-  double* value = matrix_.valuePtr();
-  flip_.assign(static_cast<std::size_t>(row_start_[rows]), 0);
+  const auto stored = static_cast<std::size_t>(row_start_[rows]);
+  values_.assign(stored, 0.0);
+  entry_particle_.assign(stored, 0);
+  entry_id_.assign(stored, 0);
+  flip_.assign(stored, 0);
   diagonal_at_.assign(rows, 0);
   own_image_.assign(rows, {0.0, 0.0, 0.0});
   on_planes_.assign(rows, 0);
-  std::uint8_t* flip = flip_.data();
   const std::size_t real = P.real_count();
   Eigen::Matrix<double, Eigen::Dynamic, D> rhs(rows, D), u(rows, D);
 
-  // Rows: off-diagonals -dt c mu_ij W_ij, the diagonal rho_i + dt c (sum mu_ij W_ij + sum_wall mu_i f_ij W_ij),
-  // the right-hand side rho_i (u_i + dt a_i) + dt c sum_wall mu_i f_ij W_ij u_b,j, and dt c mu_ij W_ij u~_j for a
-  // fluid neighbour that is not an unknown. Columns sorted within a row (insertion: rows are short and nearly sorted).
   parallel_for(rows, [&](std::size_t r) {
     const std::size_t i = particle_of_[r];
     Vec<D> b = P.density[i] * P.velocity[i];
     double diagonal = P.density[i];
     const int first = row_start_[r];
     int k = first;
+    // Into the row in id order (after the values of the same id already in: a neighbour before its images).
+    const auto insert = [&](std::uint32_t j, double value, std::uint8_t image_flip) {
+      int at = k++;
+      for (; at > first && entry_id_[at - 1] > P.id[j]; --at) {
+        values_[at] = values_[at - 1];
+        entry_particle_[at] = entry_particle_[at - 1];
+        entry_id_[at] = entry_id_[at - 1];
+        flip_[at] = flip_[at - 1];
+      }
+      values_[at] = value;
+      entry_particle_[at] = j;
+      entry_id_[at] = P.id[j];
+      flip_[at] = image_flip;
+      return at;
+    };
     auto fluid = [&](std::uint32_t j, double coupling) {
       const double a = dt * c * coupling;
       diagonal += a;
-      const int col = row_of_[P.real_index(j)];
-      if (col < 0) {
+      if (!stiff_[j]) {
         b += a * P.velocity[j];
         return;
       }
       const std::uint8_t image_flip = j < real ? 0 : P.ghost_flip[j - real];
-      if (col == static_cast<int>(r)) {  // its own image: -a u_image = -a sign u_i on the diagonal
+      if (P.id[j] == P.id[i]) {  // its own image: -a u_image = -a sign u_i on the diagonal
         for (int d = 0; d < D; ++d) own_image_[r][d] -= (image_flip >> d & 1) ? -a : a;
         return;
       }
-      int at = k++;
-      for (; at > first && column[at - 1] > col; --at) {
-        column[at] = column[at - 1];
-        value[at] = value[at - 1];
-        flip[at] = flip[at - 1];
-      }
-      column[at] = col;
-      value[at] = -a;
-      flip[at] = image_flip;
+      insert(j, -a, image_flip);
     };
     auto wall_pair = [&](std::uint32_t j, double coupling) {
       const double a = dt * c * coupling;
@@ -282,18 +281,9 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
       b += a * P.velocity[j];
     };
     for_each_viscous_coupling<D>(i, P, nl, re, wall, fluid, wall_pair);
-    int at = k++;
-    for (; at > first && column[at - 1] > static_cast<int>(r); --at) {
-      column[at] = column[at - 1];
-      value[at] = value[at - 1];
-      flip[at] = flip[at - 1];
-    }
-    column[at] = static_cast<int>(r);
-    value[at] = diagonal;
-    flip[at] = 0;
-    diagonal_at_[r] = at;
-    on_planes_[r] = domain.planes_holding(i);
-    if (on_planes_[r] != 0) {  // its share of the modelled side (matrix_of); zero across the planes it lies on
+    diagonal_at_[r] = insert(static_cast<std::uint32_t>(i), diagonal, 0);
+    on_planes_[r] = planes_[i];
+    if (on_planes_[r] != 0) {  // its share of the modelled side (values_of); zero across the planes it lies on
       b *= std::ldexp(1.0, -std::popcount(on_planes_[r]));
       for (int d = 0; d < D; ++d)
         if (on_planes_[r] >> d & 1) b[d] = 0.0;
@@ -302,33 +292,40 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
     u.row(r) = P.velocity[i].transpose();
   });
 
-  // Whether an image enters any row (otherwise every component shares matrix_).
+  // Whether an image enters any row (otherwise every component shares values_).
   const bool images = std::any_of(flip_.begin(), flip_.end(), [](std::uint8_t f) { return f != 0; }) ||
                       std::any_of(on_planes_.begin(), on_planes_.end(), [](std::uint8_t f) { return f != 0; }) ||
+                      std::any_of(planes_.begin(), planes_.end(), [](std::uint8_t f) { return f != 0; }) ||
                       std::any_of(own_image_.begin(), own_image_.end(), [](const auto& o) {
                         return o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0;
                       });
   // Each component by conjugate gradients (fluid/conjugate_gradient.hpp): a row's product runs over its columns in id
-  // order, the dot products are exact, so the solution does not depend on the particles' storage or the thread split.
+  // order, the dot products are exact, so the solution does not depend on the particles' storage, the thread split or
+  // the processes. The product reads every column's unknown through its particle: the search direction is carried to
+  // the ghosts before each product.
   std::vector<double> inverse_diagonal(rows), b(rows), x(rows);
+  p_of_particle_.assign(P.size(), 0.0);
   for (int d = 0; d < D; ++d) {
-    const Matrix& A = matrix_of(d, images);
-    const double* a = A.valuePtr();
-    const int* col = A.innerIndexPtr();
+    const std::vector<double>& A = values_of(d, images);
     parallel_for(rows, [&](std::size_t r) {
-      const double diagonal = a[diagonal_at_[r]];
+      const double diagonal = A[static_cast<std::size_t>(diagonal_at_[r])];
       inverse_diagonal[r] = diagonal != 0.0 ? 1.0 / diagonal : 1.0;
       b[r] = rhs(static_cast<Eigen::Index>(r), d);
       x[r] = u(static_cast<Eigen::Index>(r), d);
     });
     const auto product = [&](const std::vector<double>& p, std::vector<double>& y) {
+      parallel_for(rows, [&](std::size_t r) { p_of_particle_[particle_of_[r]] = p[r]; });
+      domain.refresh_values(p_of_particle_);
       parallel_for(rows, [&](std::size_t r) {
         double sum = 0.0;
-        for (int k = row_start_[r]; k < row_start_[r + 1]; ++k) sum += a[k] * p[static_cast<std::size_t>(col[k])];
+        for (int k = row_start_[r]; k < row_start_[r + 1]; ++k)
+          sum += A[static_cast<std::size_t>(k)] * p_of_particle_[entry_particle_[static_cast<std::size_t>(k)]];
         y[r] = sum;
       });
     };
-    const ConjugateGradientReport cg = conjugate_gradient(product, inverse_diagonal, b, x, tolerance, max_iterations);
+    const auto combine = [&domain](ExactSum& sum) { domain.combine(&sum, 1); };
+    const ConjugateGradientReport cg =
+        conjugate_gradient(product, inverse_diagonal, b, x, tolerance, max_iterations, combine);
     parallel_for(rows, [&](std::size_t r) { u(static_cast<Eigen::Index>(r), d) = x[r]; });
     report.iterations = std::max(report.iterations, cg.iterations);
     report.residual = std::max(report.residual, cg.error);
@@ -337,14 +334,15 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
   parallel_for(rows, [&](std::size_t r) { P.velocity[particle_of_[r]] = u.row(r).transpose(); });
   domain.refresh({HaloField::velocity});
 
-  // The viscous acceleration again where u~ changed: the unknowns and every fluid particle in their lists (a
-  // superset of the neighbours within re; serial, for it writes to neighbours).
+  // The viscous acceleration again where u~ changed: at the unknowns and every fluid particle that lists one (the
+  // lists are symmetric, images included: a superset of the neighbours within re).
   near_stiff_.assign(n, 0);
-  for (const std::uint32_t i : particle_of_) {
-    near_stiff_[i] = 1;
-    for (const std::uint32_t* q = nl.begin(i); q != nl.end(i); ++q)
-      if (P.kind[*q] == Kind::fluid) near_stiff_[P.real_index(*q)] = 1;
-  }
+  parallel_for(n, [&](std::size_t q) {
+    if (P.kind[q] != Kind::fluid) return;
+    bool near = stiff_[q] != 0;
+    for (const std::uint32_t* l = nl.begin(q); l != nl.end(q) && !near; ++l) near = stiff_[*l] != 0;
+    near_stiff_[q] = near;
+  });
   parallel_for(n, [&](std::size_t i) {
     if (near_stiff_[i]) viscous_acceleration[i] = viscous_row<D>(i, P, nl, re, n0, lambda, wall, dt).acceleration;
   });

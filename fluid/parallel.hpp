@@ -65,10 +65,10 @@ std::array<double, K> parallel_max_each(std::size_t n, const std::array<double, 
   return result;
 }
 
-// The sum over i of f(i), exact and rounded once (fluid/exact_sum.hpp): each thread sums its indices into its own
-// accumulator and the accumulators are added, which is exact too, so the result does not depend on the split.
+// The sum over i of f(i), exact (fluid/exact_sum.hpp): each thread sums its indices into its own accumulator and the
+// accumulators are added, which is exact too, so the result does not depend on the split.
 template <class F>
-double parallel_exact_sum(std::size_t n, F&& f) {
+ExactSum parallel_exact_sum_unrounded(std::size_t n, F&& f) {
   ExactSum total;
 #pragma omp parallel if (static_cast<long>(n) >= parallel_threshold)
   {
@@ -78,7 +78,13 @@ double parallel_exact_sum(std::size_t n, F&& f) {
 #pragma omp critical(slide_parallel_exact_sum)
     total += local;
   }
-  return total.value();
+  return total;
+}
+
+// The same, rounded once.
+template <class F>
+double parallel_exact_sum(std::size_t n, F&& f) {
+  return parallel_exact_sum_unrounded(n, std::forward<F>(f)).value();
 }
 
 inline int thread_count() { return omp_get_max_threads(); }
