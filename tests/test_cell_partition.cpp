@@ -59,7 +59,7 @@ namespace slide {
 namespace {
 
 // A run on more processes than its neighbour grid has cells is refused before it starts (slide run exits 2 with
-// this message; Simulation::check_processes), and so are the models that do not run on several processes yet.
+// this message; Simulation::check_processes).
 TEST(CellPartition, ARunOnMoreProcessesThanCellsIsRefusedByName) {
   const auto scene = testing::load_shipped_scene<2>("dam_break_2d.yaml", {"end_time=0.01"});
   const Simulation<2>& sim = *scene->simulation;
@@ -74,11 +74,6 @@ TEST(CellPartition, ARunOnMoreProcessesThanCellsIsRefusedByName) {
               std::string::npos)
         << e.what();
   }
-  const auto bodies = cases::build_scene<2>(
-      cases::load_scene(testing::source_dir() / "cases" / "floating_block_2d.yaml", {}), "floating_block_2d",
-      testing::source_dir() / "cases", cases::StartOfRun::left_to_caller);  // not settled: refused before that
-  EXPECT_THROW(bodies->simulation->check_processes(2), std::invalid_argument);
-  EXPECT_NO_THROW(bodies->simulation->check_processes(1));
 }
 
 }  // namespace

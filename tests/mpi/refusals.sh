@@ -1,29 +1,13 @@
 #!/usr/bin/env bash
-# refusals.sh SLIDE MPIEXEC OUT_DIR: what a run on several processes refuses (exit 2, nothing written, one message
-# naming why), a folder one process cannot read, and a process that fails alone (a full disk) stopping all of them
-# with its message and exit 1.
+# refusals.sh SLIDE MPIEXEC OUT_DIR: a run folder one process cannot read (exit 2 on every process, that one saying why,
+# nothing written), and a process that fails alone (a full disk) stopping all of them with its message and exit 1.
+# (More processes than cells: tests/test_cell_partition.cpp.)
 set -uo pipefail
 slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
 cases="$(realpath "$(dirname "$0")/../../cases")"
 rm -rf "$out"
 mkdir -p "$out"
 failed=0
-# refused NAME EXPECTED_TEXT ARGS...: mpirun -np 2 slide run ARGS exits 2, says EXPECTED_TEXT, writes nothing.
-refused() {
-  local name="$1" expected="$2"
-  shift 2
-  local folder="$out/$name"
-  "$mpiexec" --oversubscribe -np 2 "$slide" run "$@" --out "$folder" --threads 1 --quiet >"$out/$name.log" 2>&1
-  local code=$?
-  if [ "$code" -ne 2 ] || ! grep -q -- "$expected" "$out/$name.log" || [ -e "$folder" ]; then
-    echo "FAIL $name: exit $code (expected 2), folder $([ -e "$folder" ] && echo written || echo absent):"
-    cat "$out/$name.log"
-    failed=1
-  else
-    echo "ok $name: $(grep -m1 -- "$expected" "$out/$name.log")"
-  fi
-}
-refused implicit "method.viscous_scheme implicit cannot run on several processes yet" "$cases/hb_poiseuille_2d.yaml"
 # A run folder not shared by every process: a checkpoint the first process reads and the second cannot (each started
 # in its own folder, the run's given relative to it). Every process exits 2, the second says why, and the run's files
 # are left as they were.
