@@ -140,6 +140,8 @@ void Simulation<D>::distribute(std::shared_ptr<const Communicator> comm) {
   domain_.set_communicator(std::move(comm));
   if (!domain_.distributed()) return;
   prepare_processes();
+  // The particles that left before (a resumed run's) are the first process's to report, once.
+  if (domain_.communicator()->rank() > 0) left_the_domain_.clear();
   auto& P = domain_.particles;
   // The corrected gradient's matrices of the last pressure stage go along too (the semi-implicit predictor reads them).
   const bool correction = correction_current_;

@@ -504,18 +504,21 @@ struct ProcessesOfRun {
 
 // Takes the settled, started scene onto the processes (each its share); the first process builds its copy. A scene
 // that cannot run there was refused before (run_scene); what is refused here exits 2 too, nothing written.
+// The copy is built started (its gates lifted) but not settled: what it holds comes from the running simulation.
 template <int D>
-std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const YAML::Node& resolved,
-                                                 Simulation<D>& sim) {
+std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const PreparedRun<D>& run,
+                                                Simulation<D>& sim) {
   ProcessesOfRun<D> p{args.world.get(), nullptr, std::nullopt};
-  if (p.first()) {
-    p.copy = build_or_report<D>(args, resolved, cases::StartOfRun::left_to_caller);
-    if (!p.copy) return std::nullopt;
-  }
+  RunArguments scene_args = args;  // a resumed run's scene is the checkpoint's (its files beside it)
+  if (scene_args.scene.empty()) scene_args.scene = run.header.scene_file;
+  if (p.first())
+    p.copy = build_or_report<D>(scene_args, cases::load_yaml_text(run.header.resolved_scene),
+                                cases::StartOfRun::already_settled);
+  if (refused_anywhere(args, p.first() && !p.copy)) return std::nullopt;
   try {
     sim.distribute(args.world);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "; nothing was written\n";
+    std::cerr << "slide: invalid scene " << scene_args.scene.string() << ": " << e.what() << "; nothing was written\n";
     return std::nullopt;
   }
   return p;
@@ -565,7 +568,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   }
   std::optional<ProcessesOfRun<D>> processes;
   if (several) {
-    processes = distribute_run<D>(args, cases::load_yaml_text(run->header.resolved_scene), sim);
+    processes = distribute_run<D>(args, *run, sim);
     if (!processes) return 2;
   }
   const bool writes = !processes || processes->first();  // this process writes the outputs
@@ -724,6 +727,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
       return signal == 0 ? 0 : 128 + signal;
     }
     if (const auto& bad = result.instability) {
+      gather();  // run.json's counts of the failed state (every process found the same instability)
       // Several processes: each kept its own particles' last good state; the first writes them as one.
       const IdOrdered<D> pieces =
           processes ? IdOrdered<D>::merged(gather_bytes_on_first(*processes->world, last_good.snapshot.bytes()))

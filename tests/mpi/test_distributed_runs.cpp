@@ -146,9 +146,11 @@ TEST(Processes, DamBreakBetweenPlanesOfSymmetryIn3DIsTheSame) {
 // same rigid world, and the particles and the wedge's pose end the same to the bit as on one. Every 25 steps the set
 // of processes owning some of its particles is recorded: on 4 processes the cuts fall across its path and its
 // particles go from process 1 to processes 0 and 1 to process 0 (measured), which the test requires; on 2 and 3 its
-// whole path lies in process 0's cells.
+// whole path lies in process 0's cells, and the test runs on 1 and 4 only.
 TEST(Processes, ASlidingWedgeCrossesProcessesAndStaysTheSame) {
   const Communicator& comm = *world();
+  // On 2 and 3 processes the cuts miss its path, and tests/mpi/same_outputs.sh runs a wedge on 3 (CI's time).
+  if (comm.size() == 2 || comm.size() == 3) GTEST_SKIP() << "the wedge's path lies within one process's cells";
   const std::vector<std::string> overrides{"particle_spacing=0.04", "method.settling_time=0.2",
                                            "output.snapshots=false"};
   const auto run = [&](std::shared_ptr<const Communicator> processes, std::vector<std::vector<std::int64_t>>& owners) {
