@@ -20,17 +20,21 @@ on() {
   fi
 }
 failed=0
+# same_as STRAIGHT RUN LABEL: every file of STRAIGHT but run.json is in RUN byte for byte (else failed=1).
+same_as() {
+  local same=0 differ=0
+  while IFS= read -r file; do
+    if cmp -s "$1/$file" "$2/$file"; then same=$((same + 1)); else differ=$((differ + 1)); echo "differs: $file"; fi
+  done < <(cd "$1" && find . -type f ! -name run.json | sort)
+  echo "$3: $same files as the straight run's byte for byte, $differ differ"
+  if [ "$differ" -ne 0 ] || [ "$same" -lt 3 ]; then failed=1; fi
+}
 for pair in 3/2 1/3; do
   stop="${pair%/*}" resume="${pair#*/}" run="$out/stopped_on_${stop}_resumed_on_${resume}"
   on "$stop" "$scene" --out "$run" --set end_time=0.05 --stop-at 0.03 || { echo "FAIL: stop on $stop"; exit 1; }
   [ -f "$run/checkpoint.bin" ] || { echo "FAIL: no checkpoint after the stop on $stop"; exit 1; }
   on "$resume" --resume "$run" || { echo "FAIL: resume on $resume"; exit 1; }
-  same=0 differ=0
-  while IFS= read -r file; do
-    if cmp -s "$out/straight/$file" "$run/$file"; then same=$((same + 1)); else differ=$((differ + 1)); echo "differs: $file"; fi
-  done < <(cd "$out/straight" && find . -type f ! -name run.json | sort)
-  echo "stopped on $stop, resumed on $resume: $same files as the straight run's byte for byte, $differ differ"
-  if [ "$differ" -ne 0 ] || [ "$same" -lt 3 ]; then failed=1; fi
+  same_as "$out/straight" "$run" "stopped on $stop, resumed on $resume"
 done
 # SIGTERM to mpirun (what a scheduler sends before it kills a job): every process stops at the same step and the
 # checkpoint resumes, here on 2 processes, to the straight run's files (to 0.6 s; the stop falls where it falls).
@@ -49,10 +53,5 @@ if ! grep -q '"status": "interrupted"' "$run/run.json" || [ ! -f "$run/checkpoin
 fi
 echo "$(grep -m1 '"message"' "$run/run.json")"
 on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM"; exit 1; }
-same=0 differ=0
-while IFS= read -r file; do
-  if cmp -s "$out/straight_long/$file" "$run/$file"; then same=$((same + 1)); else differ=$((differ + 1)); echo "differs: $file"; fi
-done < <(cd "$out/straight_long" && find . -type f ! -name run.json | sort)
-echo "terminated on 3, resumed on 2: $same files as the straight run's byte for byte, $differ differ"
-if [ "$differ" -ne 0 ] || [ "$same" -lt 3 ]; then failed=1; fi
+same_as "$out/straight_long" "$run" "terminated on 3, resumed on 2"
 exit "$failed"
