@@ -388,6 +388,16 @@ Schema domain_schema(int dim) {
       false);
 }
 
+Schema processes_schema() {
+  return S::map("a run on several processes (mpirun; docs/using.md): ignored on one",
+                {{"rebalance_imbalance",
+                  S::number("the processes' shares of the neighbour grid's cells are made anew when the largest "
+                            "share of the particles exceeds the mean by this factor (run.json's partition reports "
+                            "the repartitions and the final imbalance); the results do not depend on it",
+                            "", DomainOptions{}.rebalance_imbalance, 1.0, S::inf, true)}},
+                false);
+}
+
 Schema dimension_schema() {
   return S::integer("spatial dimension: 2 (x along the flume, y up) or 3 (x, y horizontal, z up; the keys of 3-D "
                     "scenes are listed in their own table below)",
@@ -597,6 +607,7 @@ Schema make_schema_3d() {
        {"walls", S::list("walls", wall_schema_3d())},
        {"bodies", S::list("slides and floating bodies, rigid or deformable", body_schema_3d())},
        {"rigid", rigid_schema()},
+       {"processes", processes_schema()},
        {"method", method_schema(3)},
        {"time_step", time_step_schema()},
        {"checks", checks_schema()},
@@ -629,6 +640,7 @@ Schema make_schema() {
        {"walls", S::list("walls", wall_schema())},
        {"bodies", S::list("rigid bodies (slides, floating blocks)", body_schema())},
        {"rigid", rigid_schema()},
+       {"processes", processes_schema()},
        {"method", method_schema(2)},
        {"time_step", time_step_schema()},
        {"checks", checks_schema()},

@@ -120,6 +120,7 @@ void Simulation<D>::check_processes(int processes) const {
 template <int D>
 void Simulation<D>::prepare_processes() {
   check_processes(domain_.communicator()->size());
+  domain_.set_rebalance_imbalance(options.rebalance_imbalance);
   // A boundary particle's mirror image lies twice its depth in front of it, and the fluid around the image must be
   // here (fluid/wall_pressure.hpp, mirror_fill: the cells around the image's cell).
   const auto& P = domain_.particles;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "fluid/parallel.hpp"
@@ -22,17 +24,28 @@ struct ConjugateGradientReport {
 
 // Solves A x = b from the guess in x (n = b.size() rows). product(p, y) sets y = A p; inverse_diagonal holds 1 / A_rr
 // (1 where A_rr is 0, as Eigen's DiagonalPreconditioner).
-// combine(sum): several processes, each holding some of the rows: makes a dot product's exact partial sum the sum over
-// every process's (Domain::combine); every process then takes the same steps.
+// combine(sums, count): several processes, each holding some of the rows: makes each of the `count` dot products'
+// exact partial sums the sum over every process's (Domain::combine); every process then takes the same steps. An
+// iteration combines twice: p.q, then r.r and r.z together (z is made before r.r is tested; on the last iteration it
+// is not used), as each combine is a reduction every process waits for.
 template <class Product, class Combine>
 ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<double>& inverse_diagonal,
                                            const std::vector<double>& b, std::vector<double>& x, double tolerance,
                                            int max_iterations, Combine&& combine) {
   const std::size_t n = b.size();
-  auto dot = [n, &combine](const std::vector<double>& u, const std::vector<double>& v) {
-    ExactSum sum = parallel_exact_sum_unrounded(n, [&](std::size_t i) { return u[i] * v[i]; });
-    combine(sum);
+  auto partial = [n](const std::vector<double>& u, const std::vector<double>& v) {
+    return parallel_exact_sum_unrounded(n, [&](std::size_t i) { return u[i] * v[i]; });
+  };
+  auto dot = [&](const std::vector<double>& u, const std::vector<double>& v) {
+    ExactSum sum = partial(u, v);
+    combine(&sum, std::size_t{1});
     return sum.value();
+  };
+  // r.r and r.z in one combine.
+  auto dots_of_r = [&](const std::vector<double>& r, const std::vector<double>& z) {
+    ExactSum sums[2] = {partial(r, r), partial(r, z)};
+    combine(sums, std::size_t{2});
+    return std::pair{sums[0].value(), sums[1].value()};
   };
   ConjugateGradientReport report;
   const double b_norm2 = dot(b, b);
@@ -43,14 +56,16 @@ ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<
   const double threshold = std::max(tolerance * tolerance * b_norm2, std::numeric_limits<double>::min());
   std::vector<double> r(n), z(n), p(n), q(n);
   product(x, q);
-  parallel_for(n, [&](std::size_t i) { r[i] = b[i] - q[i]; });
-  double r_norm2 = dot(r, r);
+  parallel_for(n, [&](std::size_t i) {
+    r[i] = b[i] - q[i];
+    z[i] = inverse_diagonal[i] * r[i];
+  });
+  auto [r_norm2, rz] = dots_of_r(r, z);
   if (r_norm2 < threshold) {
     report.error = std::sqrt(r_norm2 / b_norm2);
     return report;
   }
-  parallel_for(n, [&](std::size_t i) { p[i] = inverse_diagonal[i] * r[i]; });
-  double rz = dot(r, p);
+  p = z;
   int k = 0;
   while (k < max_iterations) {
     product(p, q);
@@ -58,12 +73,11 @@ ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<
     parallel_for(n, [&](std::size_t i) {
       x[i] += alpha * p[i];
       r[i] -= alpha * q[i];
+      z[i] = inverse_diagonal[i] * r[i];
     });
-    r_norm2 = dot(r, r);
-    if (r_norm2 < threshold) break;
-    parallel_for(n, [&](std::size_t i) { z[i] = inverse_diagonal[i] * r[i]; });
     const double rz_old = rz;
-    rz = dot(r, z);
+    std::tie(r_norm2, rz) = dots_of_r(r, z);
+    if (r_norm2 < threshold) break;
     const double beta = rz / rz_old;
     parallel_for(n, [&](std::size_t i) { p[i] = z[i] + beta * p[i]; });
     ++k;
@@ -80,7 +94,7 @@ ConjugateGradientReport conjugate_gradient(Product&& product, const std::vector<
                                            const std::vector<double>& b, std::vector<double>& x, double tolerance,
                                            int max_iterations) {
   return conjugate_gradient(std::forward<Product>(product), inverse_diagonal, b, x, tolerance, max_iterations,
-                            [](ExactSum&) {});
+                            [](ExactSum*, std::size_t) {});
 }
 
 }  // namespace slide

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "fluid/communicator.hpp"
+#include "fluid/domain_options.hpp"
 #include "fluid/exact_sum.hpp"
 #include "fluid/process_halo.hpp"
 #include "fluid/parallel.hpp"
@@ -354,7 +355,7 @@ class Domain {
   ProcessHalo<D> halo_;
   bool replicated_ = false;  // every process holds every particle (before the first rebuild)
   int halo_reach_ = 1;
-  double rebalance_imbalance_ = 1.25;
+  double rebalance_imbalance_ = DomainOptions{}.rebalance_imbalance;
   double imbalance_after_partition_ = 1.0;
   long repartitions_ = 0;
 };

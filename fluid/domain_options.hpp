@@ -18,6 +18,10 @@ struct DomainOptions {
   // Every particle lies on their modelled side; two planes on one axis stand at least twice the list radius apart; not
   // along a periodic x; not with the implicit viscosity (its matrix takes a ghost's velocity as its source's).
   std::vector<MirrorPlane> mirrors;
+  // Several processes (fluid/domain.hpp): the cells are shared anew when the largest process's share of the particles
+  // exceeds the mean by this factor (scene key processes.rebalance_imbalance). The results do not depend on it, only the
+  // balance and the time spent repartitioning; 1.25 is a first choice, not tuned by a sweep.
+  double rebalance_imbalance = 1.25;
 };
 
 }  // namespace slide

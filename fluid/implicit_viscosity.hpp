@@ -323,7 +323,7 @@ ViscousSolveReport ImplicitViscosity::solve(Domain<D>& domain, const NeighborLis
         y[r] = sum;
       });
     };
-    const auto combine = [&domain](ExactSum& sum) { domain.combine(&sum, 1); };
+    const auto combine = [&domain](ExactSum* sums, std::size_t count) { domain.combine(sums, count); };
     const ConjugateGradientReport cg =
         conjugate_gradient(product, inverse_diagonal, b, x, tolerance, max_iterations, combine);
     parallel_for(rows, [&](std::size_t r) { u(static_cast<Eigen::Index>(r), d) = x[r]; });

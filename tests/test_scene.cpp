@@ -252,5 +252,24 @@ TEST(Scene, EveryShippedCaseBuilds) {
   EXPECT_GE(built, 10);
 }
 
+
+// processes.rebalance_imbalance reaches the domain's options (Simulation::prepare_processes hands it on), and a factor
+// of 1 or less, which would share the cells anew at every re-sort, is refused naming the key.
+TEST(Scene, TheRebalanceFactorReachesTheOptionsAndMustExceedOne) {
+  EXPECT_EQ(load_shipped_scene<2>("dam_break_2d.yaml")->simulation->options.rebalance_imbalance, 1.25);
+  EXPECT_EQ(load_shipped_scene<2>("dam_break_2d.yaml", {"processes.rebalance_imbalance=2"})
+                ->simulation->options.rebalance_imbalance,
+            2.0);
+  EXPECT_EQ(load_shipped_scene<3>("dam_break_3d.yaml", {"processes.rebalance_imbalance=1.5"})
+                ->simulation->options.rebalance_imbalance,
+            1.5);
+  try {
+    load_shipped_scene<2>("dam_break_2d.yaml", {"processes.rebalance_imbalance=1"});
+    FAIL() << "expected a SceneError";
+  } catch (const cases::SceneError& e) {
+    EXPECT_EQ(e.key_path, "processes.rebalance_imbalance");
+  }
+}
+
 }  // namespace
 }  // namespace slide::testing

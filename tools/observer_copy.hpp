@@ -8,6 +8,7 @@
 // The copy's memory and the gathering's time on the first process grow with the whole scene (measured: tools/bench
 // --mpi): past one machine's memory, snapshots written by every process (parallel HDF5) and observers that reduce
 // across processes take its place (not yet).
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -42,14 +43,23 @@ class ObserverCopy : public StepObserver<D> {
 
   // Brings the copy to the running simulation's present state (every process calls it).
   void gather(const Simulation<D>& sim) {
+    const auto start = std::chrono::steady_clock::now();
     const std::vector<unsigned char> all = gather_bytes_on_first(*world_, sim.owned_state_bytes());
     if (copy_) copy_->adopt_whole_state(all, sim);
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++gathers_;
   }
+  // How often the copy was brought up to date, and the seconds it took on this process (sending, or on the first
+  // receiving and taking the particles in): run.json's partition.observer_copy.
+  long gathers() const { return gathers_; }
+  double seconds() const { return seconds_; }
 
  private:
   const Communicator* world_;
   Simulation<D>* copy_;
   std::vector<Reader> readers_;
+  long gathers_ = 0;
+  double seconds_ = 0.0;
 };
 
 }  // namespace slide::tools

@@ -524,6 +524,21 @@ std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const 
   return p;
 }
 
+// run.json's partition: the rebalance factor, repartitions and final imbalance, each process's owned particles and
+// what its exchanges took (seconds of the step loop refreshing ghosts, re-sorting across processes, reducing; bytes
+// sent), and the observers' copy's gathers and their seconds on the first process (costs: 4 per process, in order).
+template <int D>
+json partition_json(const Domain<D>& domain, double imbalance, const std::vector<std::int64_t>& owned,
+                    const std::vector<double>& costs, const ObserverCopy<D>* copy) {
+  json per = json::array();
+  for (std::size_t r = 0; r * 4 < costs.size(); ++r)
+    per.push_back({{"halo_s", costs[r * 4]}, {"rebuild_s", costs[r * 4 + 1]}, {"reduction_s", costs[r * 4 + 2]},
+                   {"bytes_sent", costs[r * 4 + 3]}});
+  return {{"rebalance_imbalance", domain.rebalance_imbalance()}, {"repartitions", domain.repartitions()},
+          {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per},
+          {"observer_copy", {{"gathers", copy ? copy->gathers() : 0L}, {"seconds", copy ? copy->seconds() : 0.0}}}};
+}
+
 // The run of a D-dimensional scene: its resolved scene (a new run) or its checkpoint (a resumed one).
 template <int D>
 int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolved, std::optional<Checkpoint> checkpoint,
@@ -625,6 +640,11 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     const bool collective = processes && status != "failed";
     const std::vector<std::int64_t> owned = collective ? sim.domain().owned_counts() : std::vector<std::int64_t>{};
     const double imbalance = collective ? sim.domain().imbalance() : 1.0;
+    const CommunicationCost& cost = sim.domain().communication_cost();
+    const std::vector<double> costs =
+        collective ? gather_on_first(*processes->world, {cost.halo_seconds, cost.rebuild_seconds,
+                                                         cost.reduction_seconds, cost.bytes_sent})
+                   : std::vector<double>{};
     if (!writes) return;
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     json j;
@@ -642,11 +662,8 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     j["message"] = message;
     j["threads"] = thread_count();
     j["processes"] = processes ? processes->world->size() : 1;
-    if (processes)
-      j["partition"] = {{"rebalance_imbalance", sim.domain().rebalance_imbalance()},
-                        {"repartitions", sim.domain().repartitions()},
-                        {"imbalance", imbalance},
-                        {"owned_particles", owned}};
+    if (processes) j["partition"] = partition_json(sim.domain(), imbalance, owned, costs,
+                                                   processes->observer ? &*processes->observer : nullptr);
     j["particles"] = {{"total", whole.particles().real_count()}, {"fluid", scene->fluid_count},
                       {"wall", scene->wall_count},      {"dummy", scene->dummy_count}};
     j["derived"] = {{"n0", sim.lattice.n0},
