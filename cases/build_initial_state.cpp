@@ -130,15 +130,16 @@ void set_domain(SceneBuild<D>& b) {
   b.sim->wall_crossing = WallCrossing<D>(crossing_faces(b), opt.domain_lo, opt.domain_hi, re);
 }
 
-// The kinds of a scene's particles counted (again after gates are lifted).
+// The kinds of a scene's particles counted (again after gates are lifted), on several processes over all of them.
 template <int D>
 void count_particles(Scene<D>& scene) {
-  scene.wall_count = scene.dummy_count = scene.fluid_count = 0;
-  for (const Kind k : scene.simulation->particles().kind) {
-    if (k == Kind::fluid) ++scene.fluid_count;
-    else if (k == Kind::wall) ++scene.wall_count;
-    else ++scene.dummy_count;
-  }
+  const Particles<D>& P = scene.simulation->particles();
+  std::int64_t counts[3] = {0, 0, 0};  // fluid, wall, dummy
+  for (std::size_t i = 0; i < P.real_count(); ++i) ++counts[P.kind[i] == Kind::fluid ? 0 : P.kind[i] == Kind::wall ? 1 : 2];
+  if (scene.simulation->domain().distributed()) scene.simulation->domain().communicator()->sum(counts, 3);
+  scene.fluid_count = static_cast<std::size_t>(counts[0]);
+  scene.wall_count = static_cast<std::size_t>(counts[1]);
+  scene.dummy_count = static_cast<std::size_t>(counts[2]);
 }
 
 template <int D>
@@ -181,10 +182,9 @@ template <int D>
 void lift_gates(Scene<D>& scene) {
   if (scene.pending_gate_ids.empty()) return;
   Simulation<D>& sim = *scene.simulation;
-  Particles<D>& P = sim.particles();
-  std::vector<char> is_gate(P.id_end(), 0);
-  for (const ParticleId id : scene.pending_gate_ids) is_gate[id] = 1;  // ids are creation ranks, below id_end()
-  P.remove_if([&](std::size_t i) { return is_gate[P.id[i]] != 0; });
+  std::vector<ParticleId> gates = scene.pending_gate_ids;
+  std::sort(gates.begin(), gates.end());
+  sim.remove_particles(gates);
   scene.gate_particles = scene.pending_gate_ids.size();
   scene.pending_gate_ids.clear();
   count_particles(scene);

@@ -101,35 +101,96 @@ void Settling<D>::save_state(StateWriter& out) const { out.put(out_.largest_spee
 template <int D>
 void Settling<D>::restore_state(StateReader& in) { in.get(out_.largest_speed); }
 
+namespace {
+
+// Several processes (fluid/domain.hpp) settle the scene shared among them: what finish() reports is the whole scene's,
+// the same as on one process. comm: the simulation's (null on one process).
+
+// The refusal of water that left the domain while settling: how many left, and the first (by time, then id).
 template <int D>
-Relaxation Settling<D>::finish() {
-  auto& sim = sim_;
+std::string left_while_settling(const Simulation<D>& sim, std::int64_t count, const Communicator* comm) {
+  std::vector<double> mine;  // time, id, position
+  if (const auto& left = sim.left_the_domain(); !left.empty()) {
+    const auto& l = *std::min_element(left.begin(), left.end(), [](const LeftParticle& a, const LeftParticle& b) {
+      return a.time < b.time || (a.time == b.time && a.id < b.id);
+    });
+    mine = {l.time, double(l.id)};
+    for (int k = 0; k < D; ++k) mine.push_back(l.position[k]);
+  }
+  const std::vector<double> all = comm ? gather_on_first(*comm, mine) : mine;
+  constexpr std::size_t row = D + 2;
+  std::size_t first = 0;
+  for (std::size_t r = row; r + row <= all.size(); r += row)
+    if (all[r] < all[first] || (all[r] == all[first] && all[r + 1] < all[first + 1])) first = r;
+  Vec<D> x = Vec<D>::Zero();
+  for (int k = 0; k < D && first + row <= all.size(); ++k) x[k] = all[first + 2 + k];
+  return fmt::format("{} fluid particle{} left the domain while the water settled (the first, {}, at t = {:.6g} s at "
+                     "{}): it is not at rest; hold it with a wall, or start it without settling (initial_state: "
+                     "lattice)",
+                     count, count == 1 ? "" : "s", all.empty() ? ParticleId(0) : ParticleId(all[first + 1]),
+                     all.empty() ? 0.0 : all[first], position_text(x));
+}
+
+// How far each particle moved while settling: the largest of all, and each phase's fluid particle that moved the
+// most, from where to where (among equal distances the lowest id, whatever the particles' order). Periodic in x: to
+// the nearest image (a particle wrapped across the period's ends has not moved a period).
+template <int D>
+void find_largest_shifts(const Simulation<D>& sim, const std::vector<Vec<D>>& start, const Communicator* comm,
+                         Relaxation& out) {
   const auto& P = sim.particles();
-  // Water at rest stays in the domain: what left it while settling flowed off an open edge.
-  if (const auto& left = sim.left_the_domain(); !left.empty())
-    throw std::runtime_error(fmt::format(
-        "{} fluid particle{} left the domain while the water settled (the first, {}, at t = {:.6g} s at {}): it is not "
-        "at rest; hold it with a wall, or start it without settling (initial_state: lattice)",
-        left.size(), left.size() == 1 ? "" : "s", left.front().id, left.front().time, position_text(left.front().position)));
-  Relaxation out = out_;
-  out.steps = sim.step_count();
-  out.residual_speed = sim.max_fluid_speed();
+  constexpr std::size_t row = 2 + 2 * D;  // shift, id, from, to
+  std::vector<double> mine;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
-    Vec<D> shift = P.position[i] - start_[P.id[i]];
-    // Periodic in x: the nearest image (a particle wrapped across the period's ends has not moved a period).
+    Vec<D> shift = P.position[i] - start[P.id[i]];
     if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
     out.largest_shift = std::max(out.largest_shift, shift.norm());
     if (P.kind[i] != Kind::fluid) continue;
-    if (out.largest_shift_by_phase.size() <= P.phase[i]) {
-      out.largest_shift_by_phase.resize(P.phase[i] + 1, 0.0);
-      out.largest_shift_where_by_phase.resize(P.phase[i] + 1);
-    }
-    if (shift.norm() > out.largest_shift_by_phase[P.phase[i]]) {
-      out.largest_shift_by_phase[P.phase[i]] = shift.norm();
-      out.largest_shift_where_by_phase[P.phase[i]] = fmt::format(
-          "particle {} from {} to {}", P.id[i], position_text(Vec<D>(P.position[i] - shift)), position_text(P.position[i]));
+    if (mine.size() < (P.phase[i] + 1u) * row) mine.resize((P.phase[i] + 1u) * row, 0.0);
+    double* m = &mine[P.phase[i] * row];
+    if (shift.norm() > m[0] || (shift.norm() == m[0] && shift.norm() > 0.0 && double(P.id[i]) < m[1])) {
+      m[0] = shift.norm();
+      m[1] = double(P.id[i]);
+      for (int k = 0; k < D; ++k) m[2 + k] = P.position[i][k] - shift[k], m[2 + D + k] = P.position[i][k];
     }
   }
+  std::int64_t phases = static_cast<std::int64_t>(mine.size() / row);
+  if (comm) {
+    comm->max(&out.largest_shift, 1);
+    comm->max(&phases, 1);
+  }
+  mine.resize(static_cast<std::size_t>(phases) * row, 0.0);
+  std::vector<double> shifts(static_cast<std::size_t>(phases));
+  for (std::size_t ph = 0; ph < shifts.size(); ++ph) shifts[ph] = mine[ph * row];
+  if (comm) comm->max(shifts.data(), shifts.size());  // every process decides the same (refuse_flowing_water)
+  out.largest_shift_by_phase = shifts;
+  out.largest_shift_where_by_phase.assign(shifts.size(), "");
+  const std::vector<double> all = comm ? gather_on_first(*comm, mine) : mine;  // the first process's words
+  for (std::size_t ph = 0; ph < shifts.size(); ++ph) {
+    const double* best = nullptr;
+    for (std::size_t r = ph * row; r + row <= all.size(); r += shifts.size() * row)
+      if (all[r] > 0.0 && (!best || all[r] > best[0] || (all[r] == best[0] && all[r + 1] < best[1]))) best = &all[r];
+    if (!best) continue;
+    Vec<D> from, to;
+    for (int k = 0; k < D; ++k) from[k] = best[2 + k], to[k] = best[2 + D + k];
+    out.largest_shift_where_by_phase[ph] =
+        fmt::format("particle {} from {} to {}", ParticleId(best[1]), position_text(from), position_text(to));
+  }
+}
+
+}  // namespace
+
+template <int D>
+Relaxation Settling<D>::finish() {
+  auto& sim = sim_;
+  const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
+  // Water at rest stays in the domain: what left it while settling flowed off an open edge.
+  std::int64_t left = static_cast<std::int64_t>(sim.left_the_domain().size());
+  if (comm) comm->sum(&left, 1);
+  if (left > 0) throw std::runtime_error(left_while_settling(sim, left, comm));
+  Relaxation out = out_;
+  out.steps = sim.step_count();
+  out.residual_speed = sim.max_fluid_speed();
+  find_largest_shifts(sim, start_, comm, out);
   sim.set_velocity_damping(saved_damping_rate_);
   sim.set_rheology_suspended(false);
   if (floating_) {

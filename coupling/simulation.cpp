@@ -187,6 +187,17 @@ void Simulation<D>::restart_at_rest() {
 }
 
 template <int D>
+void Simulation<D>::remove_particles(const std::vector<ParticleId>& ids) {
+  domain_.drop_ghosts();
+  auto& P = domain_.particles;
+  const std::size_t removed_before = P.removed_count;
+  P.remove_keeping_ids([&](std::size_t i) { return std::binary_search(ids.begin(), ids.end(), P.id[i]); });
+  for (std::size_t i = 0; i < P.size(); ++i)
+    P.id[i] -= static_cast<ParticleId>(std::lower_bound(ids.begin(), ids.end(), P.id[i]) - ids.begin());
+  P.removed_count = removed_before;
+}
+
+template <int D>
 void Simulation<D>::update_neighbors(bool force) {
   auto& x = domain_.particles.position;
   const double half_skin = 0.5 * options.skin_over_dp * options.dp;

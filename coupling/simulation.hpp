@@ -123,6 +123,10 @@ class Simulation {
   // Makes the present positions the start of the run: time and step counts back to zero, fluid at rest, and
   // initialise() again (after a settled start).
   void restart_at_rest();
+  // Removes the particles of these ids (sorted; a scene's gates) on whichever process holds them, and renumbers the
+  // others' ids as Particles::remove_if does on one process: id minus the removed ids below it, so that ids stay
+  // creation ranks (the ids were 0 .. n - 1 over all processes: nothing has left the run). initialise() follows.
+  void remove_particles(const std::vector<ParticleId>& sorted_ids);
 
   // The time step the limits allow now, and which limit ruled.
   std::pair<double, TimeStepLimit> allowed_time_step() const;
@@ -158,9 +162,10 @@ class Simulation {
   // strength, method.pore_pressure none, the first phase not Newtonian (the water is the first phase), or no gravity.
   PorePressureField<D> pore_pressure_field() const;
 
-  // Several processes (tools/run_driver.cpp): after the scene is built, settled and started as on one process, the
-  // run goes on across the processes of `comm`: each keeps its share of the particles (a re-sort, which leaves a
-  // scene just built or settled as it is: the same order, the same neighbour list). Throws std::invalid_argument for
+  // Several processes (tools/run_driver.cpp): after the scene is built (or restored from a checkpoint) as on one
+  // process, before it settles, the run goes on across the processes of `comm`: each keeps its share of the particles
+  // (a re-sort at the positions of the last re-sort, which leaves a scene just built as it is: the same order, the
+  // same neighbour list). Throws std::invalid_argument for
   // what does not run on several processes yet (prepare_processes) and for more processes than the grid has cells.
   void distribute(std::shared_ptr<const Communicator> comm);
   // The refusals of distribute, for `processes`, before a run (its settling) starts.

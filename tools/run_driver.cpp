@@ -444,14 +444,54 @@ int stop_while_settling(const PreparedRun<D>& run, const Simulation<D>& sim, con
   return 128 + signal;
 }
 
+// A run on several processes, beside its running simulation: the first process's observers' copy
+// (tools/observer_copy.hpp) and what brings it up to date. Absent on one process.
+template <int D>
+struct ProcessesOfRun {
+  const Communicator* world;
+  std::unique_ptr<cases::Scene<D>> copy;  // the first process's; null on the others
+  std::optional<ObserverCopy<D>> observer;
+  bool first() const { return world->rank() == 0; }
+};
+
+// Takes the scene onto the processes (each its share) before it settles: as built, or as its checkpoint left it. The
+// first process builds its copy, its start (gates) left as the running scene's is: both are completed after settling
+// (settle_before_the_run); what the copy holds comes from the running simulation. A scene that cannot run there was
+// refused before (run_scene); what is refused here exits 2 too, nothing written.
+template <int D>
+std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const PreparedRun<D>& run,
+                                                Simulation<D>& sim) {
+  ProcessesOfRun<D> p{args.world.get(), nullptr, std::nullopt};
+  RunArguments scene_args = args;  // a resumed run's scene is the checkpoint's (its files beside it)
+  if (scene_args.scene.empty()) scene_args.scene = run.header.scene_file;
+  if (p.first())
+    p.copy = build_or_report<D>(scene_args, cases::load_yaml_text(run.header.resolved_scene),
+                                cases::StartOfRun::left_to_caller);
+  if (refused_anywhere(args, p.first() && !p.copy)) return std::nullopt;
+  try {
+    sim.distribute(args.world);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "slide: invalid scene " << scene_args.scene.string() << ": " << e.what() << "; nothing was written\n";
+    return std::nullopt;
+  }
+  return p;
+}
+
 // The settled start (method.initial_state: settled), run here rather than while the scene is built, so that a signal
 // stops it as it stops the run: within a step, with a checkpoint (stop_while_settling). A run resumed from such a
 // checkpoint settles on from it. Then the start is completed (the settled water checked at rest, the gates lifted).
+// Several processes: the scene is shared among them (`processes`) before its first step, and settles shared; stopped,
+// the first process's copy is brought up to date and writes the checkpoint.
 // Returns an exit code where the run ends here (128 + signal; 2 where the water is refused), nothing where it goes on.
 template <int D>
-std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments& args) {
+std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments& args,
+                                         std::optional<ProcessesOfRun<D>>& processes) {
   cases::Scene<D>& scene = *run.scene;
   Simulation<D>& sim = *scene.simulation;
+  const auto share = [&] {
+    if (args.world && args.world->size() > 1) processes = distribute_run<D>(args, run, sim);
+    return !args.world || args.world->size() == 1 || processes.has_value();
+  };
   std::optional<Relaxation> settled;
   const std::string refused = "slide: invalid scene " + (args.scene.empty() ? run.header.scene_file : args.scene.string()) +
                               ": method.initial_state: ";
@@ -467,61 +507,36 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
         return 2;
       }
     }
+    if (!share()) return 2;
     InterruptWatch<D> interrupt(std::numeric_limits<double>::infinity(), args.world.get());
     ProgressLine<D> progress(Clock::now(), settling.duration(), sim, "settling: ");
     std::vector<StepObserver<D>*> observers{&interrupt};
     if (!args.quiet) observers.push_back(&progress);
     try {
-      // Several processes settle the whole scene alike (it is distributed after): the first writes the checkpoint.
-      if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped)
-        return args.world && args.world->rank() > 0 ? 128 + interrupted : stop_while_settling(run, sim, settling);
+      if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped) {
+        if (!processes) return stop_while_settling(run, sim, settling);
+        Simulation<D>* copy = processes->first() ? processes->copy->simulation.get() : nullptr;
+        ObserverCopy<D>(*processes->world, copy, {}).gather(sim);
+        return copy ? stop_while_settling(run, *copy, settling) : 128 + interrupted;
+      }
       settled = settling.finish();
     } catch (const std::runtime_error& e) {  // it went unstable, or water left the domain
       std::cerr << (args.quiet ? "" : "\n") << refused << e.what() << "\n";
       return 2;
     }
     if (!args.quiet) std::cerr << "\r" << std::string(100, ' ') << "\r";
+  } else if (!share()) {
+    return 2;
   }
   try {
     cases::complete_start(scene, settled);
+    if (processes && processes->copy) cases::complete_start(*processes->copy, settled);
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << (args.scene.empty() ? run.header.scene_file : args.scene.string()) << ": "
               << e.what() << "\n";
     return 2;
   }
   return std::nullopt;
-}
-
-// A run on several processes, beside its running simulation: the first process's observers' copy
-// (tools/observer_copy.hpp) and what brings it up to date. Absent on one process.
-template <int D>
-struct ProcessesOfRun {
-  const Communicator* world;
-  std::unique_ptr<cases::Scene<D>> copy;  // the first process's; null on the others
-  std::optional<ObserverCopy<D>> observer;
-  bool first() const { return world->rank() == 0; }
-};
-
-// Takes the settled, started scene onto the processes (each its share); the first process builds its copy. A scene
-// that cannot run there was refused before (run_scene); what is refused here exits 2 too, nothing written.
-// The copy is built started (its gates lifted) but not settled: what it holds comes from the running simulation.
-template <int D>
-std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const PreparedRun<D>& run,
-                                                Simulation<D>& sim) {
-  ProcessesOfRun<D> p{args.world.get(), nullptr, std::nullopt};
-  RunArguments scene_args = args;  // a resumed run's scene is the checkpoint's (its files beside it)
-  if (scene_args.scene.empty()) scene_args.scene = run.header.scene_file;
-  if (p.first())
-    p.copy = build_or_report<D>(scene_args, cases::load_yaml_text(run.header.resolved_scene),
-                                cases::StartOfRun::already_settled);
-  if (refused_anywhere(args, p.first() && !p.copy)) return std::nullopt;
-  try {
-    sim.distribute(args.world);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "slide: invalid scene " << scene_args.scene.string() << ": " << e.what() << "; nothing was written\n";
-    return std::nullopt;
-  }
-  return p;
 }
 
 // run.json's partition: the rebalance factor, repartitions and final imbalance, each process's owned particles and
@@ -568,7 +583,6 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   auto& sim = *scene->simulation;
   for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
     if (!slide.floats_warning.empty()) std::cerr << "slide: warning: " << slide.floats_warning << "\n";
-  if (const auto ended = settle_before_the_run(*run, args)) return *ended;
   // A resumed run's state, whole on every process (before it is shared among them); the outputs' and checkpoints'
   // state after it in the same stream, read by the process that writes them.
   std::optional<StateReader> resumed_state;
@@ -582,10 +596,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     }
   }
   std::optional<ProcessesOfRun<D>> processes;
-  if (several) {
-    processes = distribute_run<D>(args, *run, sim);
-    if (!processes) return 2;
-  }
+  if (const auto ended = settle_before_the_run(*run, args, processes)) return *ended;
   const bool writes = !processes || processes->first();  // this process writes the outputs
   // What the outputs and checkpoints read: the simulation, or on several processes the first's copy of it.
   const Simulation<D>& whole = processes && processes->copy ? *processes->copy->simulation : sim;

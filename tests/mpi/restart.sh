@@ -2,7 +2,7 @@
 # restart.sh SLIDE MPIEXEC OUT_DIR: the dam break to 0.05 s straight on one process, and stopped at 0.03 s (--stop-at,
 # which writes a checkpoint) on STOP processes and resumed (--resume) on RESUME processes, for STOP/RESUME 3/2 and 1/3:
 # every file but run.json the same byte for byte. The checkpoint is the run's state as one process holds it, whatever
-# the processes that wrote it.
+# the processes that wrote it. Then SIGTERM to mpirun during the run and while the water settles, resumed on 2.
 set -uo pipefail
 slide="$1" mpiexec="$2" out="$3"
 scene="$(dirname "$0")/../../cases/dam_break_2d.yaml"
@@ -54,4 +54,23 @@ fi
 echo "$(grep -m1 '"message"' "$run/run.json")"
 on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM"; exit 1; }
 same_as "$out/straight_long" "$run" "terminated on 3, resumed on 2"
+# SIGTERM while the water settles: the gated dam break settles for 1 s before t = 0, shared among the processes (on 3
+# oversubscribed processes that takes longer than the 2 s waited); the first process's copy writes the checkpoint,
+# which settles on and runs on 2 processes to the straight one-process run's files.
+gated="$(dirname "$0")/../../cases/dam_break_gated_2d.yaml"
+"$slide" run "$gated" --out "$out/straight_gated" --threads 1 --quiet --set end_time=0.02 || exit 1
+run="$out/terminated_settling_on_3_resumed_on_2"
+"$mpiexec" --oversubscribe -np 3 "$slide" run "$gated" --out "$run" --threads 1 --quiet --set end_time=0.02 &
+pid=$!
+sleep 2
+kill -TERM "$pid"
+wait "$pid"
+if ! grep -q 'while the water settled' "$run/run.json" || [ ! -f "$run/checkpoint.bin" ]; then
+  echo "FAIL: SIGTERM to mpirun while settling left no checkpoint of the settling:"
+  grep '"message"' "$run/run.json"
+  exit 1
+fi
+echo "$(grep -m1 '"message"' "$run/run.json")"
+on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM while settling"; exit 1; }
+same_as "$out/straight_gated" "$run" "terminated on 3 while settling, resumed on 2"
 exit "$failed"
