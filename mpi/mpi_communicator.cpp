@@ -85,6 +85,20 @@ bool launched_by_mpi() {
   return false;
 }
 
+// The first of the variables present decides: mpirun inside a Slurm job starts its daemons in a job step of its own
+// (one task per node), whose SLURM_STEP_NUM_TASKS its processes inherit beside mpirun's OMPI_COMM_WORLD_SIZE.
+std::optional<LauncherCount> launcher_process_count() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS"}) {
+    const char* value = std::getenv(name);
+    if (value == nullptr) continue;
+    char* end = nullptr;
+    const long n = std::strtol(value, &end, 10);
+    if (end == value || *end != '\0' || n <= 1) return std::nullopt;
+    return LauncherCount{name, n};
+  }
+  return std::nullopt;
+}
+
 MpiSession::MpiSession(int& argc, char**& argv) {
   int provided = 0;
   check(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");

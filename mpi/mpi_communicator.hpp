@@ -6,6 +6,8 @@
 // starts MPI (MpiSession); a program started alone does not touch MPI and runs as today's single process. MPI is
 // called only from the thread that started it, outside parallel regions (MPI_THREAD_FUNNELED).
 #include <memory>
+#include <optional>
+#include <string>
 #include <string>
 
 #include "fluid/communicator.hpp"
@@ -14,6 +16,16 @@ namespace slide::mpi {
 
 // Whether a launcher (Open MPI's mpirun, PMIx, Slurm's srun with PMI) started this process.
 bool launched_by_mpi();
+
+// How many processes the launcher says it started together (Open MPI's OMPI_COMM_WORLD_SIZE, PMI's PMI_SIZE, a Slurm
+// job step's SLURM_STEP_NUM_TASKS: the first present), and in which variable; none where it says one or none is set. Where MPI then joins
+// fewer (a program whose MPI is not the launcher's, or srun without PMI support), every process would run the whole
+// scene alone into the same folder: main refuses that (exit 2) before anything runs.
+struct LauncherCount {
+  std::string variable;
+  long processes = 1;
+};
+std::optional<LauncherCount> launcher_process_count();
 
 // MPI started on construction and finished on destruction (all processes together); world() is then every process
 // of the run.

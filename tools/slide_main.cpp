@@ -128,6 +128,16 @@ int main(int argc, char** argv) {
   bool several = false;
   try {
     if (slide::mpi::launched_by_mpi()) mpi.emplace(argc, argv);
+    const long joined = mpi ? mpi->world()->size() : 1;
+    if (const auto said = slide::mpi::launcher_process_count(); said && said->processes != joined) {
+      std::cerr << "slide: the launcher started " << said->processes << " processes (" << said->variable << "="
+                << said->processes << ") but MPI joined " << joined
+                << (joined == 1 ? " (this one alone): each would run the whole scene into the same folder"
+                                : ": they are not one run")
+                << "; start slide with the mpirun of the MPI it was built with (Open MPI), or srun with PMI "
+                   "support (srun --mpi=pmix); nothing was run or written\n";
+      return 2;
+    }
     several = mpi && mpi->world()->size() > 1;
     if (several && mpi->world()->rank() > 0) slide::tools::keep_quiet();
     const int code = run_main(argc, argv, mpi ? mpi->world() : nullptr);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # refusals.sh SLIDE MPIEXEC OUT_DIR: a run folder one process cannot read (exit 2 on every process, that one saying why,
-# nothing written), and a process that fails alone (a full disk) stopping all of them with its message and exit 1.
+# nothing written), a launcher whose processes MPI does not join (exit 2, nothing written), and a process that fails
+# alone (a full disk) stopping all of them with its message and exit 1.
 # (More processes than cells: tests/test_cell_partition.cpp.)
 set -uo pipefail
 slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
@@ -25,6 +26,21 @@ if [ "$code" -ne 2 ] || ! grep -q "process 1 of 2 .*is the folder shared by ever
 else
   echo "ok unshared: $(grep -m1 "process 1 of 2" "$out/unshared.log")"
 fi
+# Started by a launcher whose MPI the program does not share (srun without PMI, another MPI's mpirun): the launcher
+# says 3 processes, MPI joins each alone. Exit 2 before anything is written, naming the variable.
+for variable in OMPI_COMM_WORLD_SIZE PMI_SIZE SLURM_STEP_NUM_TASKS; do
+  env "$variable=3" timeout 120 "$slide" run "$cases/dam_break_2d.yaml" --out "$out/alone_$variable" --threads 1 \
+    --quiet --set end_time=0.01 >"$out/alone_$variable.log" 2>&1
+  code=$?
+  if [ "$code" -ne 2 ] || [ -e "$out/alone_$variable" ] ||
+    ! grep -q "launcher started 3 processes ($variable=3) but MPI joined 1" "$out/alone_$variable.log"; then
+    echo "FAIL alone_$variable: exit $code (expected 2, nothing written):"
+    cat "$out/alone_$variable.log"
+    failed=1
+  else
+    echo "ok alone_$variable: $(head -c 120 "$out/alone_$variable.log")"
+  fi
+done
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
