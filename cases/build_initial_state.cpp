@@ -104,7 +104,9 @@ void set_domain(SceneBuild<D>& b) {
   FluidOptions<D>& opt = b.options();
   const Particles<D>& P = b.particles();
   const double re = opt.re_over_dp * b.dp;
-  opt.rebalance_imbalance = r["processes"]["rebalance_imbalance"].as<double>();
+  // (A checkpoint's scene resolved before the key existed has no processes map: the default.)
+  if (r["processes"] && r["processes"]["rebalance_imbalance"])
+    opt.rebalance_imbalance = r["processes"]["rebalance_imbalance"].as<double>();
   if (!r["domain"]) {
     opt.domain_lo = b.lo - Vec<D>::Constant(4 * re);
     opt.domain_hi = b.hi + Vec<D>::Constant(4 * re) + Vec<D>::Unit(D - 1) * (0.5 * (b.hi[D - 1] - b.lo[D - 1]));

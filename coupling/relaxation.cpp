@@ -35,6 +35,7 @@ class Settling<D>::Observer : public StepObserver<D> {
   Observer(Relaxation& out, RigidBodies<D>* floating, const Particles<D>& P, const std::vector<HeldPhase<D>>& held)
       : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(P.real_count()) {
     for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
+    holds_ = !held.empty();  // the same on every process: the scene's plan
     for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   }
   void after_step(Simulation<D>& sim, double dt) override {
@@ -46,6 +47,9 @@ class Settling<D>::Observer : public StepObserver<D> {
         P.position[i] = x0 + (P.position[i] - x0).dot(free) * free;
         P.velocity[i] = P.velocity[i].dot(free) * free;
       }
+    // The next step reads the held particles' ghosts before it refreshes them (found in review: on several processes a
+    // neighbour's copy kept the values from before the hold; periodic and mirror images did on one).
+    if (holds_) sim.refresh_moved_ghosts();
     out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
     if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
   }
@@ -54,6 +58,7 @@ class Settling<D>::Observer : public StepObserver<D> {
   Relaxation& out_;
   RigidBodies<D>* floating_;
   std::vector<bool> held_;
+  bool holds_ = false;
   std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
   std::vector<Vec<D>> start_;  // by id
 };

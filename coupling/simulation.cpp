@@ -187,6 +187,11 @@ void Simulation<D>::restart_at_rest() {
 }
 
 template <int D>
+void Simulation<D>::refresh_moved_ghosts() {
+  domain_.refresh({HaloField::motion});
+}
+
+template <int D>
 void Simulation<D>::remove_particles(const std::vector<ParticleId>& ids) {
   domain_.drop_ghosts();
   auto& P = domain_.particles;

@@ -114,6 +114,10 @@ class Simulation {
   // While settling (coupling/relaxation.hpp), non-Newtonian phases take settling_viscosity (fluid/rheology/rheology.hpp)
   // instead of their rheology, so that their pressure settles hydrostatic; the rheology acts again once it is off.
   void set_rheology_suspended(bool suspended) { rheology_suspended_ = suspended; }
+  // After an observer moved particles between steps (their positions and velocities, as settling's held phases):
+  // their ghosts (periodic and mirror images, other processes' copies) take the new values before the next step reads
+  // them. Every process calls it (a collective on several).
+  void refresh_moved_ghosts();
 
   // Computes n0 and lambda from the lattice, builds the neighbour list, and evaluates number density and
   // pressure at the initial positions. Throws std::invalid_argument for a periodic domain with rigid bodies, with a

@@ -530,7 +530,9 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
   }
   try {
     cases::complete_start(scene, settled);
-    if (processes && processes->copy) cases::complete_start(*processes->copy, settled);
+    // The copy's gates lifted (its settling is the running scene's, already judged: not judged again on the first
+    // process alone, where a refusal would leave the others waiting).
+    if (processes && processes->copy) cases::complete_start(*processes->copy, std::nullopt);
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << (args.scene.empty() ? run.header.scene_file : args.scene.string()) << ": "
               << e.what() << "\n";
