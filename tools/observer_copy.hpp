@@ -5,8 +5,9 @@
 // (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a one-process
 // run, gauges, fronts and snapshots alike.
 //
-// The copy's memory and the gathering's time on the first process grow with the whole scene (measured: tools/bench
-// --mpi): past one machine's memory, snapshots written by every process (parallel HDF5) and observers that reduce
+// The copy's memory and the gathering's time on the first process grow with the whole scene (run.json's
+// partition.observer_copy gives the gathers and their seconds; docs/using.md the measured share): past one machine's
+// memory, snapshots written by every process (parallel HDF5) and observers that reduce
 // across processes take its place (not yet).
 #include <chrono>
 #include <cstdint>
