@@ -203,10 +203,8 @@ class ProcessHalo {
     return t;
   }
 
-  // Bytes sent to other processes so far (tools/bench --mpi).
-  std::size_t bytes_sent() const { return bytes_sent_; }
-
- private:
+  // Calls f(q) for every cell q within `reach` cells of c (Chebyshev distance), c included, inside the grid: the
+  // cells whose particles a process owning c holds as ghosts (tools/bench --partition counts them the same way).
   template <class F>
   static void for_each_cell_near(const std::array<int, D>& c, const std::array<int, D>& cells, int reach, F&& f) {
     std::array<int, D> lo, hi;
@@ -225,6 +223,10 @@ class ProcessHalo {
       if (k == D) return;
     }
   }
+  // Bytes sent to other processes so far (tools/bench --mpi).
+  std::size_t bytes_sent() const { return bytes_sent_; }
+
+ private:
   // Ghost g (at index t) as its image of the source's values it was received with.
   static void place_image(Particles<D>& P, std::size_t t, std::size_t g) {
     const std::uint8_t flip = P.ghost_flip[g];

@@ -36,44 +36,41 @@ for pair in 3/2 1/3; do
   on "$resume" --resume "$run" || { echo "FAIL: resume on $resume"; exit 1; }
   same_as "$out/straight" "$run" "stopped on $stop, resumed on $resume"
 done
+# terminate_and_resume LABEL STRAIGHT RUN EXPECTED WAIT SCENE ARGS...: slide run SCENE ARGS on 3 processes into RUN,
+# SIGTERM to mpirun once WAIT (a command) returns, its run.json's message holding EXPECTED and a checkpoint left; then
+# resumed on 2 processes to the files of STRAIGHT (the same run straight on one process).
+terminate_and_resume() {
+  local label="$1" straight="$2" run="$3" expected="$4" wait_for="$5" scene="$6"
+  shift 6
+  "$slide" run "$scene" --out "$straight" --threads 1 --quiet "$@" || exit 1
+  "$mpiexec" --oversubscribe -np 3 "$slide" run "$scene" --out "$run" --threads 1 --quiet "$@" &
+  local pid=$!
+  $wait_for "$run"
+  kill -TERM "$pid"
+  wait "$pid"
+  if ! grep -q "$expected" "$run/run.json" || [ ! -f "$run/checkpoint.bin" ]; then
+    echo "FAIL: SIGTERM to mpirun ($label) left no checkpoint:"
+    grep '"message"' "$run/run.json"
+    exit 1
+  fi
+  echo "$(grep -m1 '"message"' "$run/run.json")"
+  on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM ($label)"; exit 1; }
+  same_as "$straight" "$run" "terminated on 3 ($label), resumed on 2"
+}
 # SIGTERM to mpirun (what a scheduler sends before it kills a job): every process stops at the same step and the
-# checkpoint resumes, here on 2 processes, to the straight run's files (to 0.6 s; the stop falls where it falls).
-"$slide" run "$scene" --out "$out/straight_long" --threads 1 --quiet --set end_time=0.6 || exit 1
-run="$out/terminated_on_3_resumed_on_2"
-"$mpiexec" --oversubscribe -np 3 "$slide" run "$scene" --out "$run" --threads 1 --quiet --set end_time=0.6 &
-pid=$!
-for _ in $(seq 1 600); do [ -f "$run/run.json" ] && break; sleep 0.1; done
-sleep 1
-kill -TERM "$pid"
-wait "$pid"
-if ! grep -q '"status": "interrupted"' "$run/run.json" || [ ! -f "$run/checkpoint.bin" ]; then
-  echo "FAIL: SIGTERM to mpirun left no interrupted run with a checkpoint:"
-  grep '"message"' "$run/run.json"
-  exit 1
-fi
-echo "$(grep -m1 '"message"' "$run/run.json")"
-on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM"; exit 1; }
-same_as "$out/straight_long" "$run" "terminated on 3, resumed on 2"
+# checkpoint resumes, here on 2 processes, to the straight run's files (to 0.6 s; the stop falls where it falls, a
+# second after the run's first outputs).
+running() {
+  for _ in $(seq 1 600); do [ -f "$1/run.json" ] && break; sleep 0.1; done
+  sleep 1
+}
+terminate_and_resume "running" "$out/straight_long" "$out/terminated_on_3_resumed_on_2" '"status": "interrupted"' \
+  running "$scene" --set end_time=0.6
 # SIGTERM while the water settles: the gated dam break settles for 2 s before t = 0, shared among the processes (on 3
 # oversubscribed processes on 2 cores, SIGTERM 2 s after the start stopped it at 0.31 s of its settling, measured);
-# the first process's copy writes the checkpoint, which settles on and runs on 2 processes to the straight
-# one-process run's files.
-gated="$(dirname "$0")/../../cases/dam_break_gated_2d.yaml"
-"$slide" run "$gated" --out "$out/straight_gated" --threads 1 --quiet --set end_time=0.02 \
-  --set method.settling_time=2 || exit 1
-run="$out/terminated_settling_on_3_resumed_on_2"
-"$mpiexec" --oversubscribe -np 3 "$slide" run "$gated" --out "$run" --threads 1 --quiet --set end_time=0.02 \
-  --set method.settling_time=2 &
-pid=$!
-sleep 2
-kill -TERM "$pid"
-wait "$pid"
-if ! grep -q 'while the water settled' "$run/run.json" || [ ! -f "$run/checkpoint.bin" ]; then
-  echo "FAIL: SIGTERM to mpirun while settling left no checkpoint of the settling:"
-  grep '"message"' "$run/run.json"
-  exit 1
-fi
-echo "$(grep -m1 '"message"' "$run/run.json")"
-on 2 --resume "$run" || { echo "FAIL: resume on 2 after SIGTERM while settling"; exit 1; }
-same_as "$out/straight_gated" "$run" "terminated on 3 while settling, resumed on 2"
+# the first process's copy writes the checkpoint, which settles on and runs on 2 processes.
+settling() { sleep 2; }
+terminate_and_resume "settling" "$out/straight_gated" "$out/terminated_settling_on_3_resumed_on_2" \
+  'while the water settled' settling "$(dirname "$0")/../../cases/dam_break_gated_2d.yaml" --set end_time=0.02 \
+  --set method.settling_time=2
 exit "$failed"

@@ -57,6 +57,7 @@
 #include "cases/scene.hpp"
 #include "coupling/advance.hpp"
 #include "fluid/cell_partition.hpp"
+#include "fluid/process_halo.hpp"
 #include "mpi/mpi_communicator.hpp"
 
 namespace {
@@ -120,25 +121,6 @@ std::size_t linear_index(const std::array<int, D>& c, const std::array<int, D>& 
   return l;
 }
 
-// Calls f(linear index) for every cell within `reach` cells (Chebyshev) of c, c included, inside the grid.
-template <int D, class F>
-void for_each_cell_near(const std::array<int, D>& c, const std::array<int, D>& cells, int reach, F&& f) {
-  std::array<int, D> lo, hi;
-  for (int k = 0; k < D; ++k) {
-    lo[k] = std::max(c[k] - reach, 0);
-    hi[k] = std::min(c[k] + reach, cells[k] - 1);
-  }
-  std::array<int, D> q = lo;
-  while (true) {
-    f(linear_index<D>(q, cells));
-    int k = 0;
-    for (; k < D; ++k) {
-      if (++q[k] <= hi[k]) break;
-      q[k] = lo[k];
-    }
-    if (k == D) return;
-  }
-}
 
 // ---- the methods: each returns the owner of every cell (-1: none) ----
 
@@ -270,7 +252,9 @@ std::vector<std::int64_t> part_ghosts(const CellWeights<D>& w, const Owners& own
   std::vector<int> near;
   for (const std::size_t c : w.nonempty) {
     near.clear();
-    for_each_cell_near<D>(cell_coordinates<D>(c, w.cells), w.cells, reach, [&](std::size_t q) {
+    slide::ProcessHalo<D>::for_each_cell_near(cell_coordinates<D>(c, w.cells), w.cells, reach,
+                                              [&](const std::array<int, D>& cell) {
+      const std::size_t q = linear_index<D>(cell, w.cells);
       if (owner[q] >= 0 && owner[q] != owner[c] && (empty_cells_draw || w.weight[q] > 0)) near.push_back(owner[q]);
     });
     std::sort(near.begin(), near.end());
