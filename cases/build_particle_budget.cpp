@@ -115,13 +115,27 @@ void check_run_memory(SceneBuild<D>& b) {
   const double dt = sim.allowed_time_step().first;
   in.body_steps = dt > 0.0 ? double(b.scene->bodies.size()) * (settling + b.scene->end_time) / dt : 0.0;
   b.scene->memory_estimate_bytes = program_resident_bytes() + run_memory_bytes(in);
+  // Several processes (cases::ForProcesses): this process's share, its part of the build and, on the first, the
+  // observers' copy; each holds its own against its limit (SLIDE_MEMORY_LIMIT is a process's).
+  const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
+  std::int64_t whole[2] = {static_cast<std::int64_t>(sim.particles().real_count()),
+                           static_cast<std::int64_t>(sim.particles().size())};
+  if (comm) {
+    comm->sum(whole, 2);  // the particles made, and with their images (and other processes' copies: an upper bound)
+    b.scene->memory_estimate_bytes = program_resident_bytes() +
+                                     process_memory_bytes(in, double(whole[0]), double(whole[1]), comm->rank() == 0);
+  }
   const auto limit = read_memory_limit();
   if (limit && b.scene->memory_estimate_bytes > limit->total_bytes())
     throw SceneError("particle_spacing",
-                     fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak, "
-                                 "more than the {} available ({}); use a larger particle_spacing",
-                                 sim.particles().real_count(), b.dp, size_text(b.scene->memory_estimate_bytes),
-                                 size_text(limit->total_bytes()), limit->source));
+                     fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak{}, "
+                                 "more than the {} available ({}); use a larger particle_spacing{}",
+                                 whole[0], b.dp, size_text(b.scene->memory_estimate_bytes),
+                                 comm ? fmt::format(" on process {} of {}", comm->rank(), comm->size()) : "",
+                                 size_text(limit->total_bytes()), limit->source,
+                                 !comm ? "" : comm->rank() > 0 ? " or more processes"
+                                                               : " (the first process also holds the whole scene's "
+                                                                 "particles for the outputs)"));
 }
 
 template void check_particle_budget(SceneBuild<2>&);

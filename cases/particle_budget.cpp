@@ -57,6 +57,25 @@ double run_memory_bytes(const RunMemoryInputs& in) {
   return 1.05 * (fixed + in.particles * per_particle + journal);
 }
 
+// Measured at stop 57 (the stage peaks, VmHWM, of 4 processes, oversubscribed, against one without mpirun): the 2-D
+// bench case at dp 0.005 (86,018 particles) and the 3-D bench case (230,180; 322,252 with mirror images), 1 thread:
+//  * Open MPI 4.1's own (its shared-memory transport): a one-process run under mpirun peaked 7.2 MB above the same
+//    without it; taken as 8 MB;
+//  * the build: when the scene was built and shared, each process had peaked 322 (2-D) and 347 (3-D) B a particle
+//    made above the program's and MPI's own; taken as 350 B;
+//  * the observers' copy and bringing it up to date (one process's particles at a time): the first process peaked
+//    267 (2-D) and 332 (3-D) B a particle of the copy (mirror images included) above the others; taken as 280 and
+//    350 B, and the snapshot's buffers (run_memory_bytes' 100 and 150 B) where it writes snapshots.
+// Summed, not the largest of the three: the share's run is taken on top of the build's memory, which the allocator
+// keeps, only partly reused. The sum lies above every measured peak: 4 processes of the 3-D bench, estimated
+// 184 MB (the others) and 291 MB (the first) against peaks of 126-130 MB and 235-240 MB.
+double process_memory_bytes(const RunMemoryInputs& share, double made, double copy_particles, bool first) {
+  const bool three_d = share.dimension == 3;
+  const double mpi = 8.0e6, build = 350.0 * made;
+  const double copy_per_particle = (three_d ? 350.0 : 280.0) + (share.snapshots ? (three_d ? 150.0 : 100.0) : 0.0);
+  return mpi + build + run_memory_bytes(share) + (first ? copy_per_particle * copy_particles : 0.0);
+}
+
 double particle_state_bytes(double n, int dimension) {
   // fluid/particles.hpp: four vectors, seven doubles, phase and kind, id and body frame (a body's own table aside)
   return n * (4 * double(dimension) * sizeof(double) + 7 * sizeof(double) + 2 + 2 * sizeof(std::uint32_t));

@@ -24,6 +24,12 @@ struct RunMemoryInputs {
 // checkpoint replays it). Measured against peak_resident_bytes on every shipped case (tests/test_memory_estimate.cpp).
 double run_memory_bytes(const RunMemoryInputs& in);
 
+// One process of a run on several (cases::ForProcesses), above the program's own, bytes: an upper bound, the sum of
+// Open MPI's own, the build (every process makes the whole scene's `made` particles before it keeps its share), its
+// share's run (run_memory_bytes of `share`: its owned particles and ghosts, their list), and on the first process
+// the observers' copy of `copy_particles` (tools/observer_copy.hpp). The constants: particle_budget.cpp.
+double process_memory_bytes(const RunMemoryInputs& share, double made, double copy_particles, bool first);
+
 // Bytes of the particles' own arrays (fluid/particles.hpp) for n particles: what any run of them holds at least. The
 // guard before any particle is made refuses a scene whose particles alone would not fit.
 double particle_state_bytes(double n, int dimension = 2);

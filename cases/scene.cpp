@@ -2,23 +2,20 @@
 // own file under cases/, sharing a SceneBuild: cases/scene_build.hpp).
 #include "cases/scene.hpp"
 
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 
 #include "cases/scene_build.hpp"
 
 namespace slide::cases {
 
-template <int D>
-std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& default_name,
-                                      const std::filesystem::path& scene_dir, StartOfRun start) {
-  if (scene_dimension(r) != D)
-    throw SceneError("dimension", "a " + std::to_string(scene_dimension(r)) + "-D scene given to the " +
-                                      std::to_string(D) + "-D builder");
-  SceneBuild<D> b(r, scene_dir);
-  b.scene->resolved = r;
-  b.scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
-  b.scene->end_time = r["end_time"].as<double>();
+namespace {
 
+// Everything before the neighbour list: the options, the particles and their starting state, the outputs' keys.
+template <int D>
+void make_particles(SceneBuild<D>& b) {
+  const YAML::Node& r = b.r;
   read_fluid_options(b);
   check_lattice_choices(b);
   check_period(b);
@@ -41,12 +38,48 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
   read_outputs(b);
   finish_bodies(b);
   set_phases(b);
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& default_name,
+                                      const std::filesystem::path& scene_dir, StartOfRun start,
+                                      const ForProcesses& for_processes) {
+  if (scene_dimension(r) != D)
+    throw SceneError("dimension", "a " + std::to_string(scene_dimension(r)) + "-D scene given to the " +
+                                      std::to_string(D) + "-D builder");
+  SceneBuild<D> b(r, scene_dir);
+  b.scene->resolved = r;
+  b.scene->name = r["name"].as<std::string>().empty() ? default_name : r["name"].as<std::string>();
+  b.scene->end_time = r["end_time"].as<double>();
+  const std::shared_ptr<const Communicator>& share = for_processes.share;
+  const bool shared = share && share->size() > 1;
+  // Several processes make the particles each (the same), then initialise() shares them, a collective: a refusal before
+  // it on one process alone (a file it cannot read, its memory) is agreed first, and the others stop with it.
+  std::optional<SceneError> refused;
+  try {
+    make_particles(b);
+  } catch (const SceneError& e) {
+    if (!shared) throw;
+    refused = e;
+  }
+  if (shared) {
+    std::int64_t anywhere = refused ? 1 : 0;
+    share->max(&anywhere, 1);
+    if (refused) throw *refused;
+    if (anywhere != 0) throw SceneError("processes", "another process refused the scene");
+    b.sim->set_communicator(share);
+  }
+  if (for_processes.observers_copy) b.sim->make_observers_copy(b.scene->surge_front.enabled);
   try {
     b.sim->initialise();
+  } catch (const TooManyProcesses& e) {
+    throw SceneError("processes", e.what());
   } catch (const std::invalid_argument& e) {  // what the solver refuses: a periodic domain's set-up
     throw SceneError("domain.periodic_x", e.what());
   }
-  check_run_memory(b);
+  if (!for_processes.observers_copy) check_run_memory(b);  // (the copy's memory is counted in the running scene's)
   plan_settling(b);
   b.scene->simulation = std::move(b.sim);
   std::unique_ptr<Scene<D>> scene = std::move(b.scene);
@@ -56,8 +89,8 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
 }
 
 template std::unique_ptr<Scene<2>> build_scene(const YAML::Node&, const std::string&, const std::filesystem::path&,
-                                               StartOfRun);
+                                               StartOfRun, const ForProcesses&);
 template std::unique_ptr<Scene<3>> build_scene(const YAML::Node&, const std::string&, const std::filesystem::path&,
-                                               StartOfRun);
+                                               StartOfRun, const ForProcesses&);
 
 }  // namespace slide::cases

@@ -170,11 +170,21 @@ YAML::Node load_scene_text(const std::string& text, const std::vector<std::strin
 // its own loop so that a signal can stop it: it calls complete_start after), already_settled (a run continuing from
 // a checkpoint taken after settling: the water is not settled again; the gates are lifted).
 // D: the scene's dimension (scene_dimension); a scene of the other dimension is refused naming `dimension`.
+// for_processes: what the simulation serves on several processes (tools/run_driver.cpp; one process: the defaults).
+//   share: this process's communicator, set before the first neighbour list: every process makes the particles of the
+//     whole scene, then keeps and lists only its own (Simulation::initialise), so that none holds the whole scene's
+//     list; a count of processes the neighbour grid cannot share is refused naming `processes`.
+//   observers_copy: the first process's observers' copy (tools/observer_copy.hpp): the whole scene's particles without
+//     a neighbour list (Simulation::make_observers_copy), one only where an output reads neighbours (the surge front).
 enum class StartOfRun { settle_now, left_to_caller, already_settled };
+struct ForProcesses {
+  std::shared_ptr<const Communicator> share;
+  bool observers_copy = false;
+};
 template <int D>
 std::unique_ptr<Scene<D>> build_scene(const YAML::Node& resolved, const std::string& default_name,
                                       const std::filesystem::path& scene_dir = ".",
-                                      StartOfRun start = StartOfRun::settle_now);
+                                      StartOfRun start = StartOfRun::settle_now, const ForProcesses& for_processes = {});
 
 // A resolved scene's dimension (2 or 3), which its caller dispatches on.
 inline int scene_dimension(const YAML::Node& resolved) { return resolved["dimension"].as<int>(); }

@@ -9,6 +9,7 @@
 #include "coupling/advance.hpp"
 #include "coupling/position_text.hpp"
 #include "coupling/rigid_bodies.hpp"
+#include "fluid/process_halo.hpp"
 
 namespace slide {
 
@@ -32,11 +33,11 @@ namespace {
 template <int D>
 class Settling<D>::Observer : public StepObserver<D> {
  public:
-  Observer(Relaxation& out, RigidBodies<D>* floating, const Particles<D>& P, const std::vector<HeldPhase<D>>& held)
-      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(P.real_count()) {
+  Observer(Relaxation& out, RigidBodies<D>* floating, const std::vector<Vec<D>>& start,
+           const std::vector<HeldPhase<D>>& held)
+      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(start) {
     for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
     holds_ = !held.empty();  // the same on every process: the scene's plan
-    for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
   }
   void after_step(Simulation<D>& sim, double dt) override {
     auto& P = sim.particles();
@@ -60,17 +61,43 @@ class Settling<D>::Observer : public StepObserver<D> {
   std::vector<bool> held_;
   bool holds_ = false;
   std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
-  std::vector<Vec<D>> start_;  // by id
+  const std::vector<Vec<D>>& start_;  // by id (Settling's)
 };
+
+namespace {
+// Every real particle's position by id, the whole scene's on every process: a process's particles pass to others
+// while they settle.
+template <int D>
+std::vector<Vec<D>> positions_by_id(const Simulation<D>& sim) {
+  const auto& P = sim.particles();
+  std::vector<unsigned char> mine;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    halo_bytes::put(mine, P.id[i]);
+    halo_bytes::put(mine, P.position[i]);
+  }
+  const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
+  const std::vector<unsigned char> all = comm ? gather_bytes_on_all(*comm, mine) : mine;
+  constexpr std::size_t record = sizeof(ParticleId) + sizeof(Vec<D>);
+  ParticleId end = 0;
+  for (std::size_t k = 0; k < all.size(); k += record) {
+    const unsigned char* in = all.data() + k;
+    end = std::max(end, halo_bytes::get<ParticleId>(in) + 1);
+  }
+  std::vector<Vec<D>> by_id(end, Vec<D>::Zero());
+  for (const unsigned char *in = all.data(), *stop = in + all.size(); in < stop;) {
+    const auto id = halo_bytes::get<ParticleId>(in);
+    by_id[id] = halo_bytes::get<Vec<D>>(in);
+  }
+  return by_id;
+}
+}  // namespace
 
 
 template <int D>
 Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
   out_.duration = plan.duration;
   out_.damping_rate = plan.damping_rate;
-  const auto& P = sim.particles();
-  start_.resize(P.real_count());  // real particles (periodic ghosts come and go), by id
-  for (std::size_t i = 0; i < P.real_count(); ++i) start_[P.id[i]] = P.position[i];
+  start_ = positions_by_id(sim);  // real particles (periodic ghosts come and go)
   // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
   // bodies are detached and their particles stand still as walls.
   bodies_ = sim.detach_bodies();
@@ -84,7 +111,7 @@ Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
   saved_damping_rate_ = sim.options.velocity_damping_rate;
   sim.set_velocity_damping(plan.damping_rate);
   sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
-  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, P, plan.held);
+  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, start_, plan.held);
 }
 
 template <int D>

@@ -99,11 +99,14 @@ void Simulation<D>::initialise() {
     grid_hi[m.axis] = std::max(grid_hi[m.axis], m.at + list_radius());
   }
   grid_ = NeighborGrid<D>(grid_lo, grid_hi, list_radius());
+  if (observers_copy_) return;  // its particles and their fields come from the running simulation
   if (domain_.distributed()) prepare_processes();
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();  // sized by the semi-implicit stage, the only one that uses it
   if (bodies_) bodies_->place_particles(domain_.particles, time_);
   update_neighbors(true);
+  scratch_.resize(domain_.particles.size());  // a share of the scene made whole keeps no more than its own
+  scratch_.shrink_to_fit();
   compute_pressure();
   update_water_surface();
 }
@@ -113,8 +116,8 @@ template <int D>
 void Simulation<D>::check_processes(int processes) const {
   if (processes <= 1) return;
   if (static_cast<std::size_t>(processes) > grid_.total_cells())
-    throw std::invalid_argument(fmt::format("{} processes for a neighbour grid of {} cells (each process needs at least "
-                                            "one): start fewer processes", processes, grid_.total_cells()));
+    throw TooManyProcesses(fmt::format("{} processes for a neighbour grid of {} cells (each process needs at least "
+                                       "one): start fewer processes", processes, grid_.total_cells()));
 }
 
 template <int D>
@@ -138,6 +141,7 @@ void Simulation<D>::prepare_processes() {
 // are those the run would have had on these processes since then; then the present positions go back in place.
 template <int D>
 void Simulation<D>::distribute(std::shared_ptr<const Communicator> comm) {
+  if (domain_.distributed()) return;  // shared since its build
   domain_.set_communicator(std::move(comm));
   if (!domain_.distributed()) return;
   prepare_processes();

@@ -11,8 +11,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -61,6 +63,11 @@ struct Instability {
   long step = 0;
   ParticleId particle = 0;
   std::vector<double> position;
+};
+
+// More processes than a scene's neighbour grid has cells (Simulation::check_processes).
+struct TooManyProcesses : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
 };
 
 template <int D>
@@ -119,9 +126,19 @@ class Simulation {
   // them. Every process calls it (a collective on several).
   void refresh_moved_ghosts();
 
+  // The first process's observers' copy of a run on several processes (tools/observer_copy.hpp), before initialise():
+  // it never steps, so initialise() makes no neighbour list (a run's largest array) and computes nothing, and
+  // adopt_whole_state lists the particles only where `list` asks (an output reads neighbours: the surge front).
+  void make_observers_copy(bool list) {
+    observers_copy_ = true;
+    copy_lists_ = list;
+  }
+
   // Computes n0 and lambda from the lattice, builds the neighbour list, and evaluates number density and
-  // pressure at the initial positions. Throws std::invalid_argument for a periodic domain with rigid bodies, with a
-  // period shorter than twice re + skin, or with a boundary particle outside the period.
+  // pressure at the initial positions. With a communicator set (set_communicator), the first re-sort keeps this
+  // process's share, so that no process lists the whole scene. Throws std::invalid_argument for a periodic domain
+  // with rigid bodies, with a period shorter than twice re + skin, or with a boundary particle outside the period, and
+  // TooManyProcesses.
   void initialise();
 
   // Makes the present positions the start of the run: time and step counts back to zero, fluid at rest, and
@@ -169,7 +186,8 @@ class Simulation {
   // Several processes (tools/run_driver.cpp): after the scene is built (or restored from a checkpoint) as on one
   // process, before it settles, the run goes on across the processes of `comm`: each keeps its share of the particles
   // (a re-sort at the positions of the last re-sort, which leaves a scene just built as it is: the same order, the
-  // same neighbour list). Throws std::invalid_argument for
+  // same neighbour list); a simulation shared since its build (set_communicator before initialise) stays as it is.
+  // Throws std::invalid_argument for
   // what does not run on several processes yet (prepare_processes) and for more processes than the grid has cells.
   void distribute(std::shared_ptr<const Communicator> comm);
   // The refusals of distribute, for `processes`, before a run (its settling) starts.
@@ -178,13 +196,15 @@ class Simulation {
   // The first process's whole copy of a run on several processes (tools/observer_copy.hpp). owned_state_bytes: this
   // process's owned particles (every array, with the position the neighbour list was built at) and the particles it
   // took out of the run. adopt_whole_state, on a simulation of the same scene on one process: every process's
-  // owned_state_bytes one after another, and the running simulation's time and counters; afterwards the particles are
+  // owned_state_bytes (owned_by(r) gives process r's, for r from 0 to processes - 1, each called once, in order), and
+  // the running simulation's time and counters; afterwards the particles are
   // stored, given ghosts and a neighbour list as one process would hold them at this step (by cell of the positions of
   // the last re-sort, by id within a cell), so that every output reads the same numbers in the same order as one
   // process's run, the corrected gradient's matrices of the last pressure stage included (a checkpoint holds them);
   // the rigid bodies are the running simulation's own (shared).
   std::vector<unsigned char> owned_state_bytes() const;
-  void adopt_whole_state(const std::vector<unsigned char>& gathered, const Simulation& running);
+  void adopt_whole_state(int processes, const std::function<std::vector<unsigned char>(int)>& owned_by,
+                         const Simulation& running);
 
   // Fluid number density at an arbitrary point (fluid particles only), for free-surface detection by gauges.
   double fluid_number_density_at(const Vec<D>& point) const;
@@ -243,6 +263,7 @@ class Simulation {
   bool pore_water_ = false;  // the frictional strengths act on the effective stress (pore_pressure_field)
   WaterSurface<D> water_surface_;  // of the first phase (the water), when pore_water_
   ImplicitViscosity implicit_viscosity_;
+  bool observers_copy_ = false, copy_lists_ = false;  // make_observers_copy
   ViscousSolveStats viscous_solves_;
   ViscousSolveReport last_viscous_solve_;
 };

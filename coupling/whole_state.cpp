@@ -29,7 +29,8 @@ std::vector<unsigned char> Simulation<D>::owned_state_bytes() const {
 }
 
 template <int D>
-void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered, const Simulation& running) {
+void Simulation<D>::adopt_whole_state(int processes, const std::function<std::vector<unsigned char>(int)>& owned_by,
+                                      const Simulation& running) {
   if (domain_.distributed()) throw std::logic_error("adopt_whole_state on a simulation that runs on several processes");
   auto& P = domain_.particles;
   const std::size_t made = P.id_end();
@@ -39,7 +40,10 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
   position_at_build_.clear();
   left_the_domain_.clear();
   bool correction = false;  // the same on every process
-  for (const unsigned char *in = gathered.data(), *end = in + gathered.size(); in < end;) {
+  for (int r = 0; r < processes; ++r) {  // one process's particles at a time: no buffer holds the whole scene
+    const std::vector<unsigned char> piece = owned_by(r);
+    const unsigned char* in = piece.data();
+    if (piece.empty()) continue;
     const auto n = halo_bytes::get<std::uint64_t>(in), left = halo_bytes::get<std::uint64_t>(in);
     correction = halo_bytes::get<std::uint8_t>(in) != 0;
     for (std::uint64_t k = 0; k < n; ++k) {
@@ -82,7 +86,7 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
   } else {
     grid_.follow_reorder();
   }
-  build_neighbor_list(grid_, P.position, list_radius(), list_, P.real_count());
+  if (!observers_copy_ || copy_lists_) build_neighbor_list(grid_, P.position, list_radius(), list_, P.real_count());
   position_at_build_ = P.position;
   std::copy(now_sorted.begin(), now_sorted.end(), P.position.begin());
   domain_.refresh({HaloField::motion, HaloField::number_density, HaloField::pressure, HaloField::viscosity,
@@ -110,7 +114,9 @@ void Simulation<D>::adopt_whole_state(const std::vector<unsigned char>& gathered
 
 template std::vector<unsigned char> Simulation<2>::owned_state_bytes() const;
 template std::vector<unsigned char> Simulation<3>::owned_state_bytes() const;
-template void Simulation<2>::adopt_whole_state(const std::vector<unsigned char>&, const Simulation<2>&);
-template void Simulation<3>::adopt_whole_state(const std::vector<unsigned char>&, const Simulation<3>&);
+template void Simulation<2>::adopt_whole_state(int, const std::function<std::vector<unsigned char>(int)>&,
+                                               const Simulation<2>&);
+template void Simulation<3>::adopt_whole_state(int, const std::function<std::vector<unsigned char>(int)>&,
+                                               const Simulation<3>&);
 
 }  // namespace slide

@@ -55,6 +55,16 @@ class SerialCommunicator final : public Communicator {
   }
 };
 
+// Every process's bytes, process 0's first, on every process.
+inline std::vector<unsigned char> gather_bytes_on_all(const Communicator& comm, const std::vector<unsigned char>& mine) {
+  const auto processes = static_cast<std::size_t>(comm.size());
+  std::vector<unsigned char> send;
+  send.reserve(mine.size() * processes);
+  for (std::size_t r = 0; r < processes; ++r) send.insert(send.end(), mine.begin(), mine.end());
+  std::vector<std::size_t> received;
+  return comm.exchange(send, std::vector<std::size_t>(processes, mine.size()), received);
+}
+
 // Every process's bytes, process 0's first, on process 0 (empty elsewhere).
 inline std::vector<unsigned char> gather_bytes_on_first(const Communicator& comm, const std::vector<unsigned char>& mine) {
   std::vector<std::size_t> send_bytes(static_cast<std::size_t>(comm.size()), 0), received;

@@ -78,6 +78,7 @@ class ProcessHalo {
   void keep_own(Particles<D>& P, const NeighborGrid<D>& grid, int self) const {
     P.remove_keeping_ids([&](std::size_t i) { return owner_of(P.position[i], grid) != self; });
     P.removed_count = 0;  // the others hold them
+    P.for_each_array([](auto& v) { v.shrink_to_fit(); });  // the whole scene's storage goes back
   }
 
   // The owned particles in another process's cells go to it; those it sends are appended. No ghosts present.

@@ -1,14 +1,15 @@
 #pragma once
 // A run on several processes (mpirun) writes what one process's run writes, byte for byte. The first process keeps a
 // second simulation of the scene that never steps, the observers' copy: whenever an output is due, every process sends
-// it its owned particles and the copy takes them in as one process would hold them at that step
-// (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a one-process
-// run, gauges, fronts and snapshots alike.
+// it its owned particles, one process after another, and the copy takes them in as one process would hold them at
+// that step (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a
+// one-process run, gauges, fronts and snapshots alike. The copy lists no neighbours (Simulation::make_observers_copy)
+// unless an output reads them.
 //
 // The copy's memory and the gathering's time on the first process grow with the whole scene (run.json's
-// partition.observer_copy gives the gathers and their seconds; docs/using.md the measured share): past one machine's
-// memory, snapshots written by every process (parallel HDF5) and observers that reduce
-// across processes take its place (not yet).
+// partition.observer_copy gives the gathers and their seconds, partition.memory every process's peak; docs/using.md
+// the measured figures): past one machine's memory, snapshots written by every process (parallel HDF5) and observers
+// that reduce across processes take its place (not yet).
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -45,8 +46,17 @@ class ObserverCopy : public StepObserver<D> {
   // Brings the copy to the running simulation's present state (every process calls it).
   void gather(const Simulation<D>& sim) {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<unsigned char> all = gather_bytes_on_first(*world_, sim.owned_state_bytes());
-    if (copy_) copy_->adopt_whole_state(all, sim);
+    // One process's particles at a time (a collective each, but the first's own), so that the first process holds
+    // no buffer of the whole scene beside the copy.
+    std::vector<unsigned char> mine = sim.owned_state_bytes();
+    const std::vector<unsigned char> none;
+    const auto owned_by = [&](int r) -> std::vector<unsigned char> {
+      if (r == 0) return copy_ ? std::move(mine) : none;
+      return gather_bytes_on_first(*world_, r == world_->rank() ? mine : none);
+    };
+    if (copy_) copy_->adopt_whole_state(world_->size(), owned_by, sim);
+    else
+      for (int r = 0; r < world_->size(); ++r) owned_by(r);
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++gathers_;
   }

@@ -144,10 +144,12 @@ std::optional<YAML::Node> resolve_or_report(const RunArguments& args) {
 // Builds the resolved scene; on a scene error prints it and returns null (the caller exits 2).
 template <int D>
 std::unique_ptr<cases::Scene<D>> build_or_report(const RunArguments& args, const YAML::Node& resolved,
-                                                 cases::StartOfRun start = cases::StartOfRun::settle_now) {
+                                                 cases::StartOfRun start = cases::StartOfRun::settle_now,
+                                                 const cases::ForProcesses& for_processes = {}) {
   try {
     return cases::build_scene<D>(resolved, args.scene.stem().string(),
-                              args.scene.parent_path().empty() ? "." : args.scene.parent_path(), start);
+                              args.scene.parent_path().empty() ? "." : args.scene.parent_path(), start,
+                              for_processes);
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
     return nullptr;
@@ -285,6 +287,9 @@ struct PreparedRun {
   CheckpointHeader header;  // what its checkpoints will say
   std::optional<Checkpoint> resumed_from;    // a checkpoint of the run (after t = 0) to continue from
   std::optional<Checkpoint> settling_from;   // a checkpoint taken while the water settled, to settle on from
+  // A new run on several processes: the first's observers' copy (tools/observer_copy.hpp), built before the scene so
+  // that the building's passing memory is not taken on top of the running share (null elsewhere: distribute_run).
+  std::unique_ptr<cases::Scene<D>> observers_copy;
 };
 
 // A new run of its resolved scene: check the output folder, build (its settling is the run's: settle_before_the_run).
@@ -296,11 +301,15 @@ std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const st
   run.out = args.out.empty() ? std::filesystem::path("runs") / (name.empty() ? args.scene.stem().string() : name)
                              : args.out;
   const bool writes = !args.world || args.world->rank() == 0;  // the others write nothing (tools/observer_copy.hpp)
-  if (const auto why = writes ? output_folder_problem(run.out) : std::nullopt) {
-    std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
-    return std::nullopt;
-  }
-  run.scene = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller);
+  const auto why = writes ? output_folder_problem(run.out) : std::nullopt;
+  if (why) std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
+  const bool copy = !why && writes && args.world && args.world->size() > 1;
+  if (copy)
+    run.observers_copy = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {nullptr, true});
+  // The build shares the scene (a collective): every process builds, or none.
+  if (refused_anywhere(args, why.has_value() || (copy && !run.observers_copy))) return std::nullopt;
+  // Several processes: each keeps and lists its share of the scene (cases::ForProcesses).
+  run.scene = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {args.world, false});
   if (!run.scene) return std::nullopt;
   run.header = {checkpoint_writer(), std::filesystem::absolute(args.scene).string(), args.overrides,
                 YAML::Dump(*resolved)};
@@ -459,14 +468,13 @@ struct ProcessesOfRun {
 // (settle_before_the_run); what the copy holds comes from the running simulation. A scene that cannot run there was
 // refused before (run_scene); what is refused here exits 2 too, nothing written.
 template <int D>
-std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, const PreparedRun<D>& run,
-                                                Simulation<D>& sim) {
-  ProcessesOfRun<D> p{args.world.get(), nullptr, std::nullopt};
+std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, PreparedRun<D>& run, Simulation<D>& sim) {
+  ProcessesOfRun<D> p{args.world.get(), std::move(run.observers_copy), std::nullopt};
   RunArguments scene_args = args;  // a resumed run's scene is the checkpoint's (its files beside it)
   if (scene_args.scene.empty()) scene_args.scene = run.header.scene_file;
-  if (p.first())
+  if (p.first() && !p.copy)
     p.copy = build_or_report<D>(scene_args, cases::load_yaml_text(run.header.resolved_scene),
-                                cases::StartOfRun::left_to_caller);
+                                cases::StartOfRun::left_to_caller, {nullptr, true});
   if (refused_anywhere(args, p.first() && !p.copy)) return std::nullopt;
   try {
     sim.distribute(args.world);
@@ -543,16 +551,19 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
 
 // run.json's partition: the rebalance factor, repartitions and final imbalance, each process's owned particles and
 // what its exchanges took (seconds of the step loop refreshing ghosts, re-sorting across processes, reducing; bytes
-// sent), and the observers' copy's gathers and their seconds on the first process (costs: 4 per process, in order).
+// sent), each process's memory (estimated, and its peak so far), and the observers' copy's gathers and their seconds on
+// the first process (costs: 6 per process, in order).
 template <int D>
 json partition_json(const Domain<D>& domain, double imbalance, const std::vector<std::int64_t>& owned,
                     const std::vector<double>& costs, const ObserverCopy<D>* copy) {
-  json per = json::array();
-  for (std::size_t r = 0; r * 4 < costs.size(); ++r)
-    per.push_back({{"halo_s", costs[r * 4]}, {"rebuild_s", costs[r * 4 + 1]}, {"reduction_s", costs[r * 4 + 2]},
-                   {"bytes_sent", costs[r * 4 + 3]}});
+  json per = json::array(), memory = json::array();
+  for (std::size_t r = 0; (r + 1) * 6 <= costs.size(); ++r) {
+    const double* c = &costs[r * 6];
+    per.push_back({{"halo_s", c[0]}, {"rebuild_s", c[1]}, {"reduction_s", c[2]}, {"bytes_sent", c[3]}});
+    memory.push_back({{"memory_estimate_bytes", c[4]}, {"peak_resident_bytes", c[5]}});
+  }
   return {{"rebalance_imbalance", domain.rebalance_imbalance()}, {"repartitions", domain.repartitions()},
-          {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per},
+          {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per}, {"memory", memory},
           {"observer_copy", {{"gathers", copy ? copy->gathers() : 0L}, {"seconds", copy ? copy->seconds() : 0.0}}}};
 }
 
@@ -655,8 +666,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     const double imbalance = collective ? sim.domain().imbalance() : 1.0;
     const CommunicationCost& cost = sim.domain().communication_cost();
     const std::vector<double> costs =
-        collective ? gather_on_first(*processes->world, {cost.halo_seconds, cost.rebuild_seconds,
-                                                         cost.reduction_seconds, cost.bytes_sent})
+        collective ? gather_on_first(*processes->world,
+                                     {cost.halo_seconds, cost.rebuild_seconds, cost.reduction_seconds, cost.bytes_sent,
+                                      scene->memory_estimate_bytes, peak_resident_bytes()})
                    : std::vector<double>{};
     if (!writes) return;
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# memory_guard.sh SLIDE MPIEXEC OUT_DIR: the memory guard holds each process's share of a run against its limit
+# (SLIDE_MEMORY_LIMIT is a process's). The 3-D bench case: every process's estimate on four lies above its peak and
+# below one process's estimate; at a limit between them the scene is refused on one process (exit 2, naming
+# particle_spacing, nothing written) and runs on four, every process's peak below the limit.
+set -uo pipefail
+slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
+scene="$(realpath "$(dirname "$0")/../../cases/dam_break_bench_3d.yaml")"
+rm -rf "$out"
+mkdir -p "$out"
+run_one() { "$slide" run "$scene" --out "$1" --threads 1 --quiet --set end_time=0.0005; }
+run_four() { "$mpiexec" --oversubscribe -np 4 ${SLIDE_MEMORY_LIMIT:+-x SLIDE_MEMORY_LIMIT} "$slide" run "$scene" \
+  --out "$1" --threads 1 --quiet --set end_time=0.0005; }
+unset SLIDE_MEMORY_LIMIT
+run_one "$out/one" || { echo "FAIL: the one-process run"; exit 1; }
+run_four "$out/four" || { echo "FAIL: the four-process run"; exit 1; }
+# The limit halfway between the largest estimate on four and the estimate on one; every peak below its estimate.
+limit=$(python3 - "$out" <<'PY'
+import json, sys
+one = json.load(open(sys.argv[1] + "/one/run.json"))
+four = json.load(open(sys.argv[1] + "/four/run.json"))["partition"]["memory"]
+e1 = one["memory_estimate_bytes"]
+largest = max(m["memory_estimate_bytes"] for m in four)
+for r, m in enumerate(four):
+    print(f"process {r} of 4: estimate {m['memory_estimate_bytes'] / 1e6:.1f} MB, peak "
+          f"{m['peak_resident_bytes'] / 1e6:.1f} MB", file=sys.stderr)
+print(f"one process: estimate {e1 / 1e6:.1f} MB, peak {one['peak_resident_bytes'] / 1e6:.1f} MB", file=sys.stderr)
+if not largest < e1:
+    sys.exit(f"the largest estimate on four, {largest / 1e6:.1f} MB, is not below one process's, {e1 / 1e6:.1f} MB")
+for r, m in enumerate(four):
+    if not m["peak_resident_bytes"] < m["memory_estimate_bytes"]:
+        sys.exit(f"process {r}'s peak is above its estimate")
+print(int((largest + e1) / 2))
+PY
+) || { echo "FAIL: the estimates"; exit 1; }
+echo "limit: $limit bytes a process"
+export SLIDE_MEMORY_LIMIT="$limit"
+run_one "$out/one_limited" >"$out/one_limited.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || [ -e "$out/one_limited" ] || ! grep -q "particle_spacing: the run of its" "$out/one_limited.log"
+then
+  echo "FAIL: one process at the limit: exit $code (expected 2, nothing written):"
+  cat "$out/one_limited.log"
+  exit 1
+fi
+echo "ok one process refused: $(cat "$out/one_limited.log")"
+run_four "$out/four_limited" || { echo "FAIL: four processes at the limit"; exit 1; }
+python3 - "$out" "$limit" <<'PY' || { echo "FAIL: a peak on four above the limit"; exit 1; }
+import json, sys
+four = json.load(open(sys.argv[1] + "/four_limited/run.json"))["partition"]["memory"]
+peaks = [m["peak_resident_bytes"] for m in four]
+print("ok four processes ran: peaks", ", ".join(f"{p / 1e6:.1f}" for p in peaks),
+      f"MB, limit {int(sys.argv[2]) / 1e6:.1f} MB")
+sys.exit(0 if max(peaks) < int(sys.argv[2]) else 1)
+PY
