@@ -158,9 +158,15 @@ class ProcessHalo {
       std::memcpy(out, static_cast<const void*>(&v[i]), sizeof(T));
     });
     const std::size_t r0 = P.real_count();
+    const Own own = own_images(comm);
     parallel_for(P.ghost_count(), [&](std::size_t g) {
-      const unsigned char* q = in.data() + g * sizeof(T);
-      const T value = halo_bytes::get<T>(q);
+      T value;
+      if (const std::uint32_t* source = own.source(g)) {
+        value = v[*source];
+      } else {
+        const unsigned char* q = in.data() + own.received_index(g) * sizeof(T);
+        value = halo_bytes::get<T>(q);
+      }
       const std::uint8_t flip = P.ghost_flip[g];
       if constexpr (std::is_same_v<T, Vec<D>>) v[r0 + g] = image_vector<D>(value, flip);
       else if constexpr (std::is_same_v<T, Mat<D>>) v[r0 + g] = image_matrix<D>(value, flip);
@@ -177,10 +183,17 @@ class ProcessHalo {
       std::memcpy(out + 2 * vec, static_cast<const void*>(&P.acceleration[i]), vec);
     });
     const std::size_t r0 = P.real_count();
+    const Own own = own_images(comm);
     parallel_for(P.ghost_count(), [&](std::size_t g) {
-      const unsigned char* q = in.data() + g * 3 * vec;
       const std::size_t t = r0 + g;
       const std::uint8_t flip = P.ghost_flip[g];
+      if (const std::uint32_t* source = own.source(g)) {
+        P.position[t] = image_point<D>(P.position[*source], flip, P.ghost_offset[g]);
+        P.velocity[t] = image_vector<D>(P.velocity[*source], flip);
+        P.acceleration[t] = image_vector<D>(P.acceleration[*source], flip);
+        return;
+      }
+      const unsigned char* q = in.data() + own.received_index(g) * 3 * vec;
       P.position[t] = image_point<D>(halo_bytes::get<Vec<D>>(q), flip, P.ghost_offset[g]);
       P.velocity[t] = image_vector<D>(halo_bytes::get<Vec<D>>(q), flip);
       P.acceleration[t] = image_vector<D>(halo_bytes::get<Vec<D>>(q), flip);
@@ -237,20 +250,44 @@ class ProcessHalo {
     P.acceleration[t] = image_vector<D>(P.acceleration[t], flip);
     P.wall_normal[t] = image_vector<D>(P.wall_normal[t], flip);
   }
-  // Each send list's entries, `bytes` each written by pack(i, out), to their processes, and the ghosts' entries back
-  // in ghost order: the sizes are the ghosts' (no count exchange).
+  // The ghosts this process made of its own particles (periodic and mirror images), which a refresh copies from
+  // their sources directly (as copy_to_ghosts does on one process) instead of through the exchange: those from this
+  // process, [first, first + count) among the ghosts, whose sources are send_[rank] in order.
+  struct Own {
+    std::size_t first = 0, count = 0;
+    const std::uint32_t* sources = nullptr;
+    const std::uint32_t* source(std::size_t g) const {
+      return g >= first && g < first + count ? sources + (g - first) : nullptr;
+    }
+    // Another process's ghost g: its entry in what the exchange received (the others' entries, in ghost order).
+    std::size_t received_index(std::size_t g) const { return g < first ? g : g - count; }
+  };
+  Own own_images(const Communicator& comm) const {
+    const auto self = static_cast<std::size_t>(comm.rank());
+    Own own;
+    for (std::size_t r = 0; r < self; ++r) own.first += received_[r];
+    own.count = received_[self];
+    own.sources = send_[self].data();
+    return own;
+  }
+
+  // Each send list's entries to another process, `bytes` each written by pack(i, out), and the other processes'
+  // ghosts' entries back in ghost order (this process's own images left out: Own): the sizes are the ghosts' (no
+  // count exchange).
   template <class Pack>
   std::vector<unsigned char> exchange_values(const Communicator& comm, std::size_t bytes, Pack&& pack) const {
     std::vector<std::size_t> send_bytes(send_.size()), receive_bytes(send_.size()), first(send_.size() + 1, 0);
     for (std::size_t r = 0; r < send_.size(); ++r) {
-      send_bytes[r] = send_[r].size() * bytes;
-      receive_bytes[r] = received_[r] * bytes;
-      first[r + 1] = first[r] + send_[r].size();
-      if (static_cast<int>(r) != comm.rank()) bytes_sent_ += send_bytes[r];
+      const bool other = static_cast<int>(r) != comm.rank();
+      send_bytes[r] = other ? send_[r].size() * bytes : 0;
+      receive_bytes[r] = other ? received_[r] * bytes : 0;
+      first[r + 1] = first[r] + (other ? send_[r].size() : 0);
+      bytes_sent_ += send_bytes[r];
     }
     std::vector<unsigned char> send(first.back() * bytes);
     for (std::size_t r = 0; r < send_.size(); ++r)
-      parallel_for(send_[r].size(), [&](std::size_t k) { pack(send_[r][k], send.data() + (first[r] + k) * bytes); });
+      if (send_bytes[r] != 0)
+        parallel_for(send_[r].size(), [&](std::size_t k) { pack(send_[r][k], send.data() + (first[r] + k) * bytes); });
     return comm.exchange_known(send, send_bytes, receive_bytes);
   }
   std::vector<unsigned char> exchange(const std::vector<std::vector<unsigned char>>& out, const Communicator& comm,
