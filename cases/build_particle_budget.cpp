@@ -133,9 +133,9 @@ void check_run_memory(SceneBuild<D>& b) {
                                  whole[0], b.dp, size_text(b.scene->memory_estimate_bytes),
                                  comm ? fmt::format(" on process {} of {}", comm->rank(), comm->size()) : "",
                                  size_text(limit->total_bytes()), limit->source,
-                                 !comm ? "" : comm->rank() > 0 ? " or more processes"
-                                                               : " (the first process also holds the whole scene's "
-                                                                 "particles for the outputs)"));
+                                 comm && comm->rank() == 0 ? " (the first process also holds the whole scene's "
+                                                             "particles for the outputs)"
+                                                           : ""));
 }
 
 template void check_particle_budget(SceneBuild<2>&);

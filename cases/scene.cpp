@@ -68,7 +68,7 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
     std::int64_t anywhere = refused ? 1 : 0;
     share->max(&anywhere, 1);
     if (refused) throw *refused;
-    if (anywhere != 0) throw SceneError("processes", "another process refused the scene");
+    if (anywhere != 0) throw RefusedOnAnotherProcess("processes", "another process refused the scene");
     b.sim->set_communicator(share);
   }
   if (for_processes.observers_copy) b.sim->make_observers_copy(b.scene->surge_front.enabled);

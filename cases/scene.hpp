@@ -177,6 +177,10 @@ YAML::Node load_scene_text(const std::string& text, const std::vector<std::strin
 //   observers_copy: the first process's observers' copy (tools/observer_copy.hpp): the whole scene's particles without
 //     a neighbour list (Simulation::make_observers_copy), one only where an output reads neighbours (the surge front).
 enum class StartOfRun { settle_now, left_to_caller, already_settled };
+// What the processes that did not refuse a shared build throw: another said why (tools/run_driver.cpp lets it speak).
+struct RefusedOnAnotherProcess : SceneError {
+  using SceneError::SceneError;
+};
 struct ForProcesses {
   std::shared_ptr<const Communicator> share;
   bool observers_copy = false;

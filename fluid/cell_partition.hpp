@@ -3,7 +3,7 @@
 // the cells' weights (their particles). The cells are ordered across their longest axis (in cells), then the next
 // longest, and so on; the first half of the processes takes the cells before the cut that gives it its share of the
 // weight, and each half is cut again, until one process is left per set. Where a cut between two slabs across the
-// axis comes within 0.5 % of the share, it is taken there (a flat face: the fewest ghosts); otherwise inside the slab
+// axis comes within 0.5 % of the cells' weight of the share (1 % of an even half), it is taken there (a flat face: the fewest ghosts); otherwise inside the slab
 // (a step, along the next axis). Every process computes the same map from the same weights (no communication, no
 // randomness), and a process's particles are those of whole cells.
 //

@@ -10,8 +10,9 @@
 // it, and the fluid around that image must be here too (Domain::set_halo_reach).
 //
 // A ghost is stored as fluid/ghosts.hpp describes (flip, offset, the source's id), with ghost_source remote_source: its
-// source may be on this process (a periodic or mirror image of an owned particle) or another; either way its values
-// come through the exchange, and a received value becomes the ghost's by the image's flip.
+// source may be on this process (a periodic or mirror image of an owned particle) or another. A refresh copies an own
+// image's values from its source directly (Own) and another process's through the exchange; either way the value
+// becomes the ghost's by the image's flip.
 #include <algorithm>
 #include <array>
 #include <cstdint>

@@ -60,7 +60,8 @@ TEST(CellPartition, ACutFallsInsideASlabWhereNoneBetweenSlabsIsNearTheShare) {
 }
 
 // 16 and 64 processes on a loaded block of 60 x 70 cells (9-11 particles each) in a 200 x 100 grid: each of the
-// log2(P) cuts on the way to a process is within 0.5 % of its share or within a cell of it, so no share exceeds the
+// log2(P) cuts on the way to a process is within 0.5 % of the weight it cuts (1 % of an even half) or within a cell
+// of its share, so no share exceeds the
 // mean by more than those errors compounded. Cut between slabs only (stop 56), the largest share was 6.9 % (16) and
 // 13.4 % (64) above the mean on such a block.
 TEST(CellPartition, ManyProcessesShareWithinEachCutsTolerance) {
@@ -82,7 +83,7 @@ TEST(CellPartition, ManyProcessesShareWithinEachCutsTolerance) {
       heaviest_cell = std::max(heaviest_cell, double(w[c]));
     }
     const double levels = std::log2(double(parts)), mean = total / parts;
-    EXPECT_LE(*std::max_element(load.begin(), load.end()), mean * std::pow(1.005, levels) + levels * heaviest_cell)
+    EXPECT_LE(*std::max_element(load.begin(), load.end()), mean * std::pow(1.01, levels) + levels * heaviest_cell)
         << parts << " processes";
   }
 }

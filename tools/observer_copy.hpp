@@ -51,7 +51,10 @@ class ObserverCopy : public StepObserver<D> {
     std::vector<unsigned char> mine = sim.owned_state_bytes();
     const std::vector<unsigned char> none;
     const auto owned_by = [&](int r) -> std::vector<unsigned char> {
-      if (r == 0) return copy_ ? std::move(mine) : none;
+      if (r == 0) {
+        if (!copy_) return {};
+        return std::move(mine);
+      }
       return gather_bytes_on_first(*world_, r == world_->rank() ? mine : none);
     };
     if (copy_) copy_->adopt_whole_state(world_->size(), owned_by, sim);

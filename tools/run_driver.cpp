@@ -53,6 +53,7 @@ double peak_resident_bytes() {
 namespace {
 std::streambuf* own_stderr = nullptr;  // where standard error went before keep_quiet
 std::stringbuf held_stderr;             // what a quiet process said since
+bool refused_elsewhere = false;         // this process stopped because another refused (cases::RefusedOnAnotherProcess)
 }  // namespace
 
 void keep_quiet() {
@@ -67,9 +68,11 @@ void speak_up() {
 namespace {
 // Several processes: whether any refused (exit 2) at this point of a run's preparation, agreed by all (a process that
 // went on alone would wait for the others for ever). What the first process refuses it has said; a refusal of another
-// process alone (a file it cannot read: the run's folder is not shared) it says now, with its number.
+// process alone (a file it cannot read: the run's folder is not shared; its own memory limit) it says now, with its
+// number.
 bool refused_anywhere(const RunArguments& args, bool refused_here) {
   if (!args.world || args.world->size() == 1) return refused_here;
+  if (std::exchange(refused_elsewhere, false)) refused_here = false;  // the process that refused says why
   const auto& world = *args.world;
   std::vector<std::int64_t> refused(static_cast<std::size_t>(world.size()), 0);
   refused[static_cast<std::size_t>(world.rank())] = refused_here ? 1 : 0;
@@ -77,8 +80,9 @@ bool refused_anywhere(const RunArguments& args, bool refused_here) {
   if (refused_here && world.rank() > 0 && refused[0] == 0) {
     const std::string said = held_stderr.str();
     speak_up();
-    std::cerr << "slide: process " << world.rank() << " of " << world.size() << " (its files are not the first's: is "
-              << "the folder shared by every process?): " << (said.rfind("slide: ", 0) == 0 ? said.substr(7) : said);
+    std::cerr << "slide: process " << world.rank() << " of " << world.size() << " (alone: its files or environment "
+              << "are not the first's; is the folder shared by every process?): "
+              << (said.rfind("slide: ", 0) == 0 ? said.substr(7) : said);
     keep_quiet();
   }
   held_stderr.str("");
@@ -150,6 +154,9 @@ std::unique_ptr<cases::Scene<D>> build_or_report(const RunArguments& args, const
     return cases::build_scene<D>(resolved, args.scene.stem().string(),
                               args.scene.parent_path().empty() ? "." : args.scene.parent_path(), start,
                               for_processes);
+  } catch (const cases::RefusedOnAnotherProcess&) {
+    refused_elsewhere = true;
+    return nullptr;
   } catch (const cases::SceneError& e) {
     std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
     return nullptr;

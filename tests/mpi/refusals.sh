@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # refusals.sh SLIDE MPIEXEC OUT_DIR: a run folder one process cannot read (exit 2 on every process, that one saying why,
-# nothing written), a launcher whose processes MPI does not join (exit 2, nothing written), and a process that fails
-# alone (a full disk) stopping all of them with its message and exit 1.
+# nothing written), a scene one process alone refuses while it is built (the same), a launcher whose processes MPI
+# does not join (exit 2, nothing written), and a process that fails alone (a full disk) stopping all of them with its
+# message and exit 1.
 # (More processes than cells: tests/test_cell_partition.cpp.)
 set -uo pipefail
 slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
@@ -41,6 +42,20 @@ for variable in OMPI_COMM_WORLD_SIZE PMI_SIZE SLURM_STEP_NUM_TASKS; do
     echo "ok alone_$variable: $(head -c 120 "$out/alone_$variable.log")"
   fi
 done
+# A scene refused while it is built by a process other than the first alone (here its own memory limit, 1 kB): every
+# process exits 2 before the build shares the scene, and that process says why, with its number; nothing is written.
+timeout 120 "$mpiexec" --oversubscribe -np 1 "$slide" run "$cases/dam_break_2d.yaml" --out "$out/refused_by_one" \
+  --threads 1 --quiet --set end_time=0.01 : -np 1 -x SLIDE_MEMORY_LIMIT=1k "$slide" run "$cases/dam_break_2d.yaml" \
+  --out "$out/refused_by_one" --threads 1 --quiet --set end_time=0.01 >"$out/refused_by_one.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || [ -e "$out/refused_by_one" ] ||
+  ! grep -q "process 1 of 2 .*particle_spacing: .*SLIDE_MEMORY_LIMIT" "$out/refused_by_one.log"; then
+  echo "FAIL refused_by_one: exit $code (expected 2, process 1 saying why, nothing written):"
+  cat "$out/refused_by_one.log"
+  failed=1
+else
+  echo "ok refused_by_one: $(grep -m1 "process 1 of 2" "$out/refused_by_one.log" | head -c 160)"
+fi
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
