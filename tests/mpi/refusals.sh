@@ -27,35 +27,31 @@ if [ "$code" -ne 2 ] || ! grep -q "process 1 of 2 .*is the folder shared by ever
 else
   echo "ok unshared: $(grep -m1 "process 1 of 2" "$out/unshared.log")"
 fi
+# expect_refusal CODE NAME PATTERN: the run NAME exited 2, wrote nothing ($out/NAME absent), and its log
+# ($out/NAME.log) matches PATTERN.
+expect_refusal() {
+  local code="$1" name="$2" pattern="$3"
+  if [ "$code" -ne 2 ] || [ -e "$out/$name" ] || ! grep -q "$pattern" "$out/$name.log"; then
+    echo "FAIL $name: exit $code (expected 2, nothing written, the log saying: $pattern):"
+    cat "$out/$name.log"
+    failed=1
+  else
+    echo "ok $name: $(grep -m1 "$pattern" "$out/$name.log" | head -c 160)"
+  fi
+}
 # Started by a launcher whose MPI the program does not share (srun without PMI, another MPI's mpirun): the launcher
 # says 3 processes, MPI joins each alone. Exit 2 before anything is written, naming the variable.
 for variable in OMPI_COMM_WORLD_SIZE PMI_SIZE SLURM_STEP_NUM_TASKS; do
   env "$variable=3" timeout 120 "$slide" run "$cases/dam_break_2d.yaml" --out "$out/alone_$variable" --threads 1 \
     --quiet --set end_time=0.01 >"$out/alone_$variable.log" 2>&1
-  code=$?
-  if [ "$code" -ne 2 ] || [ -e "$out/alone_$variable" ] ||
-    ! grep -q "launcher started 3 processes ($variable=3) but MPI joined 1" "$out/alone_$variable.log"; then
-    echo "FAIL alone_$variable: exit $code (expected 2, nothing written):"
-    cat "$out/alone_$variable.log"
-    failed=1
-  else
-    echo "ok alone_$variable: $(head -c 120 "$out/alone_$variable.log")"
-  fi
+  expect_refusal $? "alone_$variable" "launcher started 3 processes ($variable=3) but MPI joined 1"
 done
 # A scene refused while it is built by a process other than the first alone (here its own memory limit, 1 kB): every
 # process exits 2 before the build shares the scene, and that process says why, with its number; nothing is written.
 timeout 120 "$mpiexec" --oversubscribe -np 1 "$slide" run "$cases/dam_break_2d.yaml" --out "$out/refused_by_one" \
   --threads 1 --quiet --set end_time=0.01 : -np 1 -x SLIDE_MEMORY_LIMIT=1k "$slide" run "$cases/dam_break_2d.yaml" \
   --out "$out/refused_by_one" --threads 1 --quiet --set end_time=0.01 >"$out/refused_by_one.log" 2>&1
-code=$?
-if [ "$code" -ne 2 ] || [ -e "$out/refused_by_one" ] ||
-  ! grep -q "process 1 of 2 .*particle_spacing: .*SLIDE_MEMORY_LIMIT" "$out/refused_by_one.log"; then
-  echo "FAIL refused_by_one: exit $code (expected 2, process 1 saying why, nothing written):"
-  cat "$out/refused_by_one.log"
-  failed=1
-else
-  echo "ok refused_by_one: $(grep -m1 "process 1 of 2" "$out/refused_by_one.log" | head -c 160)"
-fi
+expect_refusal $? refused_by_one "process 1 of 2 .*particle_spacing: .*SLIDE_MEMORY_LIMIT"
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
