@@ -204,7 +204,7 @@ std::pair<int, bool> dataset_filters(hid_t file, const std::string& name) {
 }
 
 // The default format deflates every dataset (shuffle + deflate) and keeps the values exactly; `none` writes them
-// contiguous. The values read back are the same either way.
+// in chunks without filters. The values read back are the same either way.
 TEST(SnapshotWriter, DeflatedSnapshotsHoldTheSameValues) {
   for (const bool deflate : {true, false}) {
     TempDir dir(deflate ? "snap_deflate" : "snap_plain");

@@ -3,13 +3,13 @@
 // second simulation of the scene that never steps, the observers' copy: whenever an output is due, every process sends
 // it its owned particles, one process after another, and the copy takes them in as one process would hold them at
 // that step (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a
-// one-process run, gauges, fronts and snapshots alike. The copy lists no neighbours (Simulation::make_observers_copy)
-// unless an output reads them.
+// one-process run, gauges and fronts alike. The copy lists no neighbours (Simulation::make_observers_copy) unless an
+// output reads them. Snapshots are the exception: every process gives its own particles, and the processes holding a
+// chunk's rows encode it (tools/snapshot_rows.hpp).
 //
 // The copy's memory and the gathering's time on the first process grow with the whole scene (run.json's
 // partition.observer_copy gives the gathers and their seconds, partition.memory every process's peak; docs/using.md
-// the measured figures): past one machine's memory, snapshots written by every process (parallel HDF5) and observers
-// that reduce across processes take its place (not yet).
+// the measured figures): past one machine's memory, observers that reduce across processes take its place (not yet).
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -29,18 +29,27 @@ class ObserverCopy : public StepObserver<D> {
     std::function<bool(double)> due;
     StepObserver<D>* observer;
   };
-  // copy and readers: the first process's; null and none on the others.
-  ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers)
-      : world_(&world), copy_(copy), readers_(std::move(readers)) {}
+  // copy and readers: the first process's; null and none on the others. Snapshots: whether the first's outputs write
+  // one after the step at time t (on the first), and what the others do then: join the collective that writes it
+  // from every process's own particles (tools/snapshot_rows.hpp), which the first's outputs call.
+  struct Snapshots {
+    std::function<bool(double)> due;
+    std::function<void(const Simulation<D>&)> join;
+  };
+  ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers, Snapshots snapshots = {})
+      : world_(&world), copy_(copy), readers_(std::move(readers)), snapshots_(std::move(snapshots)) {}
 
-  // Every process: whether any reader reads after this step (the first process knows), and then the copy first.
+  // Every process: whether any reader reads after this step, and a snapshot among it (the first process knows); then
+  // the copy first.
   void after_step(Simulation<D>& sim, double dt) override {
-    std::int64_t due = 0;
-    for (const Reader& r : readers_) due = due || r.due(sim.time()) ? 1 : 0;
-    world_->max(&due, 1);
-    if (due == 0) return;
+    std::int64_t due[2] = {0, 0};
+    for (const Reader& r : readers_) due[0] = due[0] || r.due(sim.time()) ? 1 : 0;
+    if (snapshots_.due) due[1] = snapshots_.due(sim.time()) ? 1 : 0;
+    world_->max(due, 2);
+    if (due[0] == 0) return;
     gather(sim);
     for (const Reader& r : readers_) r.observer->after_step(*copy_, dt);
+    if (!copy_ && due[1] != 0) snapshots_.join(sim);
   }
 
   // Brings the copy to the running simulation's present state (every process calls it).
@@ -72,6 +81,7 @@ class ObserverCopy : public StepObserver<D> {
   const Communicator* world_;
   Simulation<D>* copy_;
   std::vector<Reader> readers_;
+  Snapshots snapshots_;
   long gathers_ = 0;
   double seconds_ = 0.0;
 };

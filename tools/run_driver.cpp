@@ -29,6 +29,7 @@
 #include "tools/atomic_file.hpp"
 #include "tools/checkpoint.hpp"
 #include "tools/observer_copy.hpp"
+#include "tools/snapshot_rows.hpp"
 #include "tools/output_folder.hpp"
 #include "tools/run_outputs.hpp"
 #include "tools/sweep/recommendation.hpp"
@@ -645,14 +646,32 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     if (!refusal.empty()) std::cerr << "slide: --resume " << out.string() << ": " << refusal << "; nothing was run\n";
     return 2;
   }
+  // Several processes: a snapshot of every process's own particles (or of their last good state), a collective; the
+  // first's outputs call it where they write one, the others join it.
+  const SnapshotFormat snapshot_format_of_scene = snapshot_format(*scene);
+  const auto shared_snapshot = [&](const IdOrdered<D>& mine, double time, long step) {
+    write_shared_snapshot(*processes->world, writes ? outputs->snapshot_writer() : nullptr, snapshot_format_of_scene,
+                          mine, time, step);
+  };
+  const auto join_snapshot = [&](const Simulation<D>& s) { shared_snapshot(IdOrdered<D>(s.particles()), 0.0, 0); };
   if (processes) {
     std::vector<typename ObserverCopy<D>::Reader> readers;
-    if (writes)
+    typename ObserverCopy<D>::Snapshots snapshots{nullptr, join_snapshot};
+    if (writes) {
       readers = {{[&o = *outputs](double t) { return o.due(t); }, &*outputs},
                  {[&c = *checkpoints](double t) { return c.due(t); }, &*checkpoints}};
+      snapshots.due = [&o = *outputs](double t) { return o.snapshot_due(t); };
+      outputs->write_snapshots_with(
+          [&](double time, long step) { shared_snapshot(IdOrdered<D>(sim.particles()), time, step); });
+    }
     processes->observer.emplace(*processes->world, processes->copy ? processes->copy->simulation.get() : nullptr,
-                                std::move(readers));
+                                std::move(readers), std::move(snapshots));
   }
+  // Where the first process writes a snapshot outside the step loop, the others join it: `first_writes_one` is known
+  // on every process.
+  const auto others_join_snapshot = [&](bool first_writes_one) {
+    if (processes && !writes && first_writes_one) join_snapshot(sim);
+  };
   // The copy brought up to date (a collective on several processes: every one calls it at the same point).
   const auto gather = [&] {
     if (processes) processes->observer->gather(sim);
@@ -744,6 +763,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   try {
     gather();
     if (writes && !run->resumed_from) outputs->write_initial();
+    others_join_snapshot(!run->resumed_from && scene->output.snapshots);
     write_run_json("running", "", json::object());
 
     InterruptWatch<D> interrupt(args.stop_at, args.world.get());
@@ -764,6 +784,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
         outputs->write_snapshot(whole.particles(), sim.time(), sim.step_count());
         outputs->flush();
       }
+      others_join_snapshot(scene->output.snapshots);
       const int signal = interrupted;
       const std::string why = signal == 0 ? "stopped as --stop-at asked" : signal == SIGTERM ? "interrupted by SIGTERM"
                                                                                             : "interrupted by SIGINT";
@@ -777,11 +798,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     }
     if (const auto& bad = result.instability) {
       gather();  // run.json's counts of the failed state (every process found the same instability)
-      // Several processes: each kept its own particles' last good state; the first writes them as one.
-      const IdOrdered<D> pieces =
-          processes ? IdOrdered<D>::merged(gather_bytes_on_first(*processes->world, last_good.snapshot.bytes()))
-                    : IdOrdered<D>();
-      if (writes) outputs->write_snapshot(processes ? pieces : last_good.snapshot, last_good.time, last_good.step);
+      // Several processes: each kept its own particles' last good state, and gives it to the snapshot.
+      if (!processes) outputs->write_snapshot(last_good.snapshot, last_good.time, last_good.step);
+      else if (scene->output.snapshots) shared_snapshot(last_good.snapshot, last_good.time, last_good.step);
       if (writes) outputs->flush();
       const std::string where = bad->position.size() >= 2 ? position_text(bad->position) : "";
       const std::string msg = fmt::format(
@@ -800,7 +819,10 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
       return 3;
     }
     gather();
+    std::int64_t final_snapshot = writes && outputs->final_snapshot_due() ? 1 : 0;  // (the first process knows)
+    if (processes) processes->world->max(&final_snapshot, 1);
     if (writes) outputs->write_final();
+    others_join_snapshot(final_snapshot != 0);
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
     const std::string msg =
         fmt::format("completed t = {:.6g} s in {} steps, {:.3f} s wall, {:.4g} M particle-steps/s; time-step limits: {}",

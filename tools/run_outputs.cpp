@@ -54,15 +54,17 @@ void IdOrdered<D>::assign(const Particles<D>& P) {
 }
 
 template <int D>
-std::vector<unsigned char> IdOrdered<D>::bytes() const {
+std::vector<unsigned char> IdOrdered<D>::bytes(std::size_t begin, std::size_t end) const {
   std::vector<unsigned char> out;
-  const auto put = [&out](const auto& v) {
+  const auto put = [&out, begin, end](const auto& v, std::size_t per) {
     const auto* p = reinterpret_cast<const unsigned char*>(v.data());
-    out.insert(out.end(), p, p + v.size() * sizeof(v[0]));
+    const std::size_t row = per * sizeof(v[0]);
+    out.insert(out.end(), p + begin * row, p + end * row);
   };
-  const std::uint64_t n = id.size();
+  const std::uint64_t n = end - begin;
   out.insert(out.end(), reinterpret_cast<const unsigned char*>(&n), reinterpret_cast<const unsigned char*>(&n + 1));
-  put(position), put(velocity), put(pressure), put(number_density), put(density), put(phase), put(kind), put(id);
+  put(position, D), put(velocity, D), put(pressure, 1), put(number_density, 1), put(density, 1), put(phase, 1);
+  put(kind, 1), put(id, 1);
   return out;
 }
 
@@ -167,16 +169,19 @@ std::vector<double> body_row(const RigidBodies<D>& bodies, int b, const typename
 }  // namespace
 
 template <int D>
+SnapshotFormat snapshot_format(const cases::Scene<D>& scene) {
+  SnapshotFormat format;
+  if (!scene.output.snapshot_fields.empty()) format.fields = scene.output.snapshot_fields;
+  format.single_precision = scene.output.snapshot_single_precision;
+  format.deflate = scene.output.snapshot_deflate;
+  return format;
+}
+
+template <int D>
 RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& observed, const std::filesystem::path& out,
                           bool resuming)
     : scene_(scene), sim_(observed) {
-  if (scene.output.snapshots) {
-    SnapshotFormat format;
-    if (!scene.output.snapshot_fields.empty()) format.fields = scene.output.snapshot_fields;
-    format.single_precision = scene.output.snapshot_single_precision;
-    format.deflate = scene.output.snapshot_deflate;
-    snapshots_.emplace(out, snapshot_legend(sim_), !resuming, std::move(format));
-  }
+  if (scene.output.snapshots) snapshots_.emplace(out, snapshot_legend(sim_), !resuming, snapshot_format(scene));
   if (sim_.bodies()) bodies_.emplace(out / "bodies.csv", body_columns<D>());
   if (!scene.gauges.empty()) {
     std::vector<std::string> cols{"time"};
@@ -217,7 +222,9 @@ RunOutputs<D>::RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& obs
 
 template <int D>
 void RunOutputs<D>::write_snapshot(const Particles<D>& P, double time, long step) {
-  if (snapshots_) snapshots_->write(time, step, IdOrdered<D>(P).fields());
+  if (!snapshots_) return;
+  if (shared_snapshot_) shared_snapshot_(time, step);
+  else snapshots_->write(time, step, IdOrdered<D>(P).fields());
 }
 
 template <int D>
@@ -422,11 +429,15 @@ void RunOutputs<D>::after_step(Simulation<D>& sim, double) {
 }
 
 template <int D>
-void RunOutputs<D>::write_final() {
+bool RunOutputs<D>::final_snapshot_due() const {
   const double interval = scene_.output.snapshot_interval;
+  return snapshots_ && (snapshots_->count() == 0 || interval <= 0 || sim_.time() > next_snapshot_ - interval + eps_);
+}
+
+template <int D>
+void RunOutputs<D>::write_final() {
   const double t = sim_.time();
-  if (snapshots_ && (snapshots_->count() == 0 || interval <= 0 || t > next_snapshot_ - interval + eps_))
-    write_snapshot(sim_.particles(), t, sim_.step_count());
+  if (final_snapshot_due()) write_snapshot(sim_.particles(), t, sim_.step_count());
   if (t > last_sample_time_ + eps_) sample();
   if (bodies_ && t > last_body_sample_time_ + eps_) sample_bodies();
   flush();
@@ -511,6 +522,8 @@ void RunOutputs<D>::restore_state(StateReader& in) {
 
 template struct IdOrdered<2>;
 template struct IdOrdered<3>;
+template SnapshotFormat snapshot_format(const cases::Scene<2>&);
+template SnapshotFormat snapshot_format(const cases::Scene<3>&);
 template class RunOutputs<2>;
 template class RunOutputs<3>;
 

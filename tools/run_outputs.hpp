@@ -2,6 +2,7 @@
 // What a run writes while it goes (DESIGN.md, "Command line and outputs"): snapshots, gauges, the surge front,
 // profiles and bodies.csv, each at its scene-set interval. One observer of the step loop (coupling/advance.hpp).
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -26,10 +27,16 @@ struct IdOrdered {
   // Refills from P, reusing the arrays' storage (the last good state takes one every few steps).
   void assign(const Particles<D>& P);
   SnapshotFields fields() const { return {D, position, velocity, pressure, number_density, density, phase, kind, id}; }
-  // Several processes: each process's piece as bytes, and every process's pieces (one after another) as one, by id.
-  std::vector<unsigned char> bytes() const;
+  // Several processes: each process's piece as bytes (its rows [begin, end), or all), and every process's pieces (one
+  // after another) as one, by id.
+  std::vector<unsigned char> bytes() const { return bytes(0, id.size()); }
+  std::vector<unsigned char> bytes(std::size_t begin, std::size_t end) const;
   static IdOrdered merged(const std::vector<unsigned char>& pieces);
 };
+
+// The snapshots' format the scene's output keys ask for.
+template <int D>
+SnapshotFormat snapshot_format(const cases::Scene<D>& scene);
 
 // Every CSV a scene asks for, in 2-D and 3-D (the 2-D diagnostics, surge front and velocity profile, are absent from
 // 3-D scenes so far).
@@ -43,8 +50,15 @@ class RunOutputs : public StepObserver<D> {
   // (tools/observer_copy.hpp), which the copy's owner brings up to date before each step where due() says so.
   RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& observed, const std::filesystem::path& out,
              bool resuming = false);
-  // Whether after_step at time t samples or writes anything.
+  // Whether after_step at time t samples or writes anything; a snapshot among it; and whether write_final writes one.
   bool due(double t) const;
+  bool snapshot_due(double t) const { return snapshots_ && t >= next_snapshot_ - eps_; }
+  bool final_snapshot_due() const;
+  // Several processes: the first's snapshots are every process's own particles, written by `shared(time, step)`, a
+  // collective the others join where snapshot_due and final_snapshot_due say (tools/snapshot_rows.hpp), rather than the
+  // observed copy's particles.
+  void write_snapshots_with(std::function<void(double, long)> shared) { shared_snapshot_ = std::move(shared); }
+  SnapshotWriter* snapshot_writer() { return snapshots_ ? &*snapshots_ : nullptr; }
 
   // Writes the initial state (snapshot and first samples) and flushes.
   void write_initial();
@@ -87,6 +101,7 @@ class RunOutputs : public StepObserver<D> {
   const cases::Scene<D>& scene_;
   const Simulation<D>& sim_;
   std::optional<SnapshotWriter> snapshots_;
+  std::function<void(double, long)> shared_snapshot_;
   std::optional<CsvWriter> gauges_, front_, velocity_profile_, bodies_, profiles_, slide_front_, slide_outline_,
       slide_shapes_;
   std::size_t next_profile_ = 0, next_outline_ = 0, next_shape_ = 0;
@@ -101,6 +116,8 @@ class RunOutputs : public StepObserver<D> {
 
 extern template struct IdOrdered<2>;
 extern template struct IdOrdered<3>;
+extern template SnapshotFormat snapshot_format(const cases::Scene<2>&);
+extern template SnapshotFormat snapshot_format(const cases::Scene<3>&);
 extern template class RunOutputs<2>;
 extern template class RunOutputs<3>;
 

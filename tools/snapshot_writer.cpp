@@ -3,7 +3,10 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -14,8 +17,10 @@
 #include <fmt/ranges.h>
 
 #include "cases/snapshot_field_names.hpp"
+#include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/markup_escape.hpp"
+#include "tools/snapshot_chunk.hpp"
 
 namespace slide::tools {
 
@@ -144,29 +149,20 @@ H5Handle create_file(const std::filesystem::path& path) {
                "cannot create file");
 }
 
-// Rows of a deflated dataset's chunk: 32768 rows of a vector are 786 kB in double precision, under HDF5's default
-// chunk cache of 1 MB, and a reader of a few particles inflates no more than that.
+// Rows of a dataset's chunk: 32768 rows of a vector are 786 kB in double precision, under HDF5's default chunk cache of
+// 1 MB, and a reader of a few particles inflates no more than that. Deflated: HDF5's byte shuffle and deflate at
+// level 1 (the fastest: measured on a 96 k particle snapshot, 0.07 s for 82 -> 37 B a particle).
 constexpr size_t kChunkRows = 32768;
 
-// Writes a dataset `name` of rank 1 (cols == 0) or 2 (rows x cols): contiguous, or in chunks with HDF5's byte shuffle
-// and deflate at level 1 (the fastest: measured on a 96 k particle snapshot, 0.07 s for 82 -> 37 B a particle).
-void write_dataset(hid_t file, const std::filesystem::path& path, const char* name,
-                   hid_t file_type, hid_t mem_type, const void* data, size_t rows,
-                   size_t cols = 0, bool deflate = false) {
-  hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
-  const int rank = cols == 0 ? 1 : 2;
-  H5Handle space = check(H5Screate_simple(rank, dims, nullptr), H5Sclose, path,
+// Writes a contiguous dataset `name` of `rows` values (the master file's times and steps).
+void write_dataset(hid_t file, const std::filesystem::path& path, const char* name, hid_t file_type, hid_t mem_type,
+                   const void* data, size_t rows) {
+  const hsize_t dims[1] = {static_cast<hsize_t>(rows)};
+  H5Handle space = check(H5Screate_simple(1, dims, nullptr), H5Sclose, path,
                          fmt::format("cannot create dataspace for /{}", name));
   H5Handle dcpl = untimed_properties(H5P_DATASET_CREATE, path);
-  if (deflate && rows > 0) {
-    const hsize_t chunk[2] = {static_cast<hsize_t>(std::min(rows, kChunkRows)), static_cast<hsize_t>(cols)};
-    check(H5Pset_chunk(dcpl.get(), rank, chunk), path, fmt::format("cannot chunk /{}", name));
-    check(H5Pset_shuffle(dcpl.get()), path, fmt::format("cannot shuffle /{}", name));
-    check(H5Pset_deflate(dcpl.get(), 1), path, fmt::format("cannot deflate /{} (HDF5 without zlib?)", name));
-  }
-  H5Handle ds = check(H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(),
-                                 H5P_DEFAULT),
-                      H5Dclose, path, fmt::format("cannot create dataset /{}", name));
+  H5Handle ds = check(H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), H5Dclose,
+                      path, fmt::format("cannot create dataset /{}", name));
   if (rows > 0) {
     check(H5Dwrite(ds.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path,
           fmt::format("cannot write dataset /{}", name));
@@ -227,6 +223,205 @@ constexpr FieldSpec kFieldSpecs[] = {
     {"kind", "Scalar", "UChar", 1, "1"},          {"id", "Scalar", "UInt", 4, "1"},
 };
 
+// How a snapshot dataset's values are stored (little-endian, as this machine holds them).
+enum class Stored { f64, f32, u8, u32, u64 };
+static_assert(std::endian::native == std::endian::little, "snapshot chunks are written as this machine holds them");
+
+size_t stored_bytes(Stored t) {
+  switch (t) {
+    case Stored::f64: case Stored::u64: return 8;
+    case Stored::f32: case Stored::u32: return 4;
+    case Stored::u8: return 1;
+  }
+  return 0;
+}
+
+hid_t file_type(Stored t) {
+  switch (t) {
+    case Stored::f64: return H5T_IEEE_F64LE;
+    case Stored::f32: return H5T_IEEE_F32LE;
+    case Stored::u8: return H5T_STD_U8LE;
+    case Stored::u32: return H5T_STD_U32LE;
+    case Stored::u64: return H5T_STD_U64LE;
+  }
+  return H5I_INVALID_HID;
+}
+
+// A dataset of a snapshot: its name, how its values are stored, its columns (0: one value a row), and its rows as the
+// file stores them: fill(begin, count, out) writes a slab's rows [begin, begin + count) to out.
+struct SnapshotDataset {
+  const char* name;
+  Stored stored;
+  size_t cols;
+  std::function<void(size_t, size_t, unsigned char*)> fill;
+  size_t row_bytes() const { return stored_bytes(stored) * std::max<size_t>(cols, 1); }
+};
+
+// A slab's datasets, in the file's order: position, the format's fields, kind, id, and the connectivity (the rows'
+// numbers, 0 .. total - 1: the Polyvertex cells ParaView's Xdmf3 reader needs to show points). Reals in the format's
+// precision; a vector padded to three components (XDMF's XYZ).
+std::vector<SnapshotDataset> snapshot_datasets(const SnapshotSlab& slab, const SnapshotFormat& format) {
+  const SnapshotFields& f = slab.fields;
+  const size_t d = static_cast<size_t>(f.dim);
+  const Stored real = format.single_precision ? Stored::f32 : Stored::f64;
+  const auto reals = [real, d](std::span<const double> src, size_t cols) {
+    return [src, cols, real, d](size_t begin, size_t count, unsigned char* out) {
+      const size_t width = cols == 0 ? 1 : cols, given = cols == 0 ? 1 : d;
+      for (size_t i = begin; i < begin + count; ++i)
+        for (size_t k = 0; k < width; ++k) {
+          const double v = k < given ? src[i * given + k] : 0.0;
+          if (real == Stored::f64) {
+            std::memcpy(out, &v, 8);
+            out += 8;
+          } else {
+            const float narrow = static_cast<float>(v);
+            std::memcpy(out, &narrow, 4);
+            out += 4;
+          }
+        }
+    };
+  };
+  const auto copied = [](const auto* src, size_t bytes) {
+    return [src, bytes](size_t begin, size_t count, unsigned char* out) {
+      std::memcpy(out, reinterpret_cast<const unsigned char*>(src) + begin * bytes, count * bytes);
+    };
+  };
+  std::vector<SnapshotDataset> sets{{"position", real, 3, reals(f.position, 3)}};
+  if (format.holds("velocity")) sets.push_back({"velocity", real, 3, reals(f.velocity, 3)});
+  for (const auto& [name, values] : {std::pair{"pressure", f.pressure}, std::pair{"number_density", f.number_density},
+                                     std::pair{"density", f.density}})
+    if (format.holds(name)) sets.push_back({name, real, 0, reals(values, 0)});
+  if (format.holds("phase")) sets.push_back({"phase", Stored::u8, 0, copied(f.phase.data(), 1)});
+  sets.push_back({"kind", Stored::u8, 0, copied(f.kind.data(), 1)});
+  sets.push_back({"id", Stored::u64, 0, copied(f.id.data(), 8)});
+  const size_t first_row = slab.first_row;
+  sets.push_back({"connectivity", Stored::u32, 0, [first_row](size_t begin, size_t count, unsigned char* out) {
+                    for (size_t i = begin; i < begin + count; ++i, out += 4) {
+                      const auto row = static_cast<uint32_t>(first_row + i);
+                      std::memcpy(out, &row, 4);
+                    }
+                  }});
+  return sets;
+}
+
+// A slab's rows as the datasets need them: sizes that agree, and each chunk's rows within it.
+void check_slab(const SnapshotSlab& slab) {
+  const SnapshotFields& f = slab.fields;
+  if (f.dim != 2 && f.dim != 3) {
+    throw std::invalid_argument(fmt::format("SnapshotFields::dim must be 2 or 3, got {}", f.dim));
+  }
+  const size_t n = f.pressure.size();
+  const size_t d = static_cast<size_t>(f.dim);
+  check_size("position", f.position.size(), n * d);
+  check_size("velocity", f.velocity.size(), n * d);
+  check_size("number_density", f.number_density.size(), n);
+  check_size("density", f.density.size(), n);
+  check_size("phase", f.phase.size(), n);
+  check_size("kind", f.kind.size(), n);
+  check_size("id", f.id.size(), n);
+  const size_t chunk = SnapshotWriter::chunk_rows(slab.total);
+  if (n > 0 && (slab.first_row % chunk != 0 || slab.first_row + n > slab.total ||
+                (n % chunk != 0 && slab.first_row + n != slab.total)))
+    throw std::invalid_argument(fmt::format("a snapshot slab of rows {} to {} of {} does not hold whole chunks of {}",
+                                            slab.first_row, slab.first_row + n, slab.total, chunk));
+}
+
+// One process's chunks of a dataset, encoded (tools/snapshot_chunk.hpp): the index of the first, their sizes, and
+// their bytes one after another; as bytes to send.
+struct EncodedChunks {
+  uint64_t first = 0;
+  std::vector<uint64_t> sizes;
+  std::vector<unsigned char> bytes;
+
+  std::vector<unsigned char> serialised() const {
+    std::vector<unsigned char> out((2 + sizes.size()) * 8 + bytes.size());
+    const uint64_t count = sizes.size();
+    std::memcpy(out.data(), &first, 8);
+    std::memcpy(out.data() + 8, &count, 8);
+    if (count) std::memcpy(out.data() + 16, sizes.data(), count * 8);
+    if (!bytes.empty()) std::memcpy(out.data() + 16 + count * 8, bytes.data(), bytes.size());
+    return out;
+  }
+  static EncodedChunks parsed(const std::vector<unsigned char>& in) {
+    EncodedChunks e;
+    if (in.empty()) return e;
+    uint64_t count = 0;
+    std::memcpy(&e.first, in.data(), 8);
+    std::memcpy(&count, in.data() + 8, 8);
+    e.sizes.resize(count);
+    if (count) std::memcpy(e.sizes.data(), in.data() + 16, count * 8);
+    e.bytes.assign(in.begin() + static_cast<std::ptrdiff_t>(16 + count * 8), in.end());
+    return e;
+  }
+};
+
+// The slab's chunks of a dataset, encoded by the threads (each chunk by one: the bytes do not depend on how many).
+EncodedChunks encoded_chunks(const SnapshotDataset& dataset, const SnapshotSlab& slab, bool deflate) {
+  const size_t n = slab.fields.pressure.size(), chunk = SnapshotWriter::chunk_rows(slab.total);
+  EncodedChunks out;
+  if (n == 0) return out;
+  out.first = slab.first_row / chunk;
+  const size_t chunks = (n + chunk - 1) / chunk;
+  std::vector<std::vector<unsigned char>> each(chunks);
+  std::vector<std::string> errors(chunks);
+  parallel_for_blocks(chunks, n, [&](size_t c) {
+    try {
+      const size_t begin = c * chunk, count = std::min(chunk, n - begin);
+      std::vector<unsigned char> rows(count * dataset.row_bytes());
+      dataset.fill(begin, count, rows.data());
+      each[c] = encoded_chunk(rows, chunk * dataset.row_bytes(), stored_bytes(dataset.stored), deflate);
+    } catch (const std::exception& e) {  // (an exception must not leave a thread)
+      errors[c] = e.what();
+    }
+  });
+  for (size_t c = 0; c < chunks; ++c) {
+    if (!errors[c].empty()) throw std::runtime_error(errors[c]);
+    out.sizes.push_back(each[c].size());
+    out.bytes.insert(out.bytes.end(), each[c].begin(), each[c].end());
+    std::vector<unsigned char>().swap(each[c]);
+  }
+  return out;
+}
+
+// Creates a dataset of `total` rows in chunks (shuffled and deflated where asked) and writes every process's encoded
+// chunks into it, the first's, then each other process's in turn (a collective each: SnapshotWriter::send is the
+// others' side), so that the first holds no more than one process's chunks of one dataset at a time.
+void write_chunked_dataset(hid_t file, const std::filesystem::path& path, const SnapshotDataset& dataset,
+                           const SnapshotSlab& mine, bool deflate, const Communicator& world) {
+  const size_t total = mine.total, chunk = SnapshotWriter::chunk_rows(total);
+  const int rank = dataset.cols == 0 ? 1 : 2;
+  const hsize_t dims[2] = {static_cast<hsize_t>(total), static_cast<hsize_t>(dataset.cols)};
+  H5Handle space = check(H5Screate_simple(rank, dims, nullptr), H5Sclose, path,
+                         fmt::format("cannot create dataspace for /{}", dataset.name));
+  H5Handle dcpl = untimed_properties(H5P_DATASET_CREATE, path);
+  if (total > 0) {
+    const hsize_t chunk_dims[2] = {static_cast<hsize_t>(chunk), static_cast<hsize_t>(dataset.cols)};
+    check(H5Pset_chunk(dcpl.get(), rank, chunk_dims), path, fmt::format("cannot chunk /{}", dataset.name));
+    if (deflate) {
+      check(H5Pset_shuffle(dcpl.get()), path, fmt::format("cannot shuffle /{}", dataset.name));
+      check(H5Pset_deflate(dcpl.get(), 1), path,
+            fmt::format("cannot deflate /{} (HDF5 without zlib?)", dataset.name));
+    }
+  }
+  H5Handle ds = check(H5Dcreate2(file, dataset.name, file_type(dataset.stored), space.get(), H5P_DEFAULT, dcpl.get(),
+                                 H5P_DEFAULT),
+                      H5Dclose, path, fmt::format("cannot create dataset /{}", dataset.name));
+  const auto write = [&](const EncodedChunks& e) {
+    const unsigned char* at = e.bytes.data();
+    for (size_t k = 0; k < e.sizes.size(); ++k) {
+      const hsize_t offset[2] = {static_cast<hsize_t>((e.first + k) * chunk), 0};
+      check(H5Dwrite_chunk(ds.get(), H5P_DEFAULT, 0, offset, e.sizes[k], at), path,
+            fmt::format("cannot write dataset /{}", dataset.name));
+      at += e.sizes[k];
+    }
+  };
+  if (total > 0) {
+    write(encoded_chunks(dataset, mine, deflate));
+    for (int r = 1; r < world.size(); ++r) write(EncodedChunks::parsed(gather_bytes_on_first(world, {})));
+  }
+  check(ds.close(), path, fmt::format("cannot close dataset /{}", dataset.name));
+}
+
 }  // namespace
 
 const std::vector<std::string>& SnapshotFormat::field_names() { return cases::snapshot_field_names(); }
@@ -235,6 +430,8 @@ bool SnapshotFormat::holds(std::string_view field) const {
   return field == "position" || field == "kind" || field == "id" ||
          std::find(fields.begin(), fields.end(), field) != fields.end();
 }
+
+size_t SnapshotWriter::chunk_rows(size_t total) { return std::max<size_t>(1, std::min(total, kChunkRows)); }
 
 std::string SnapshotWriter::snapshot_name(size_t index) { return fmt::format("{:06d}", index); }
 
@@ -289,22 +486,14 @@ void SnapshotWriter::continue_series(std::vector<Entry> entries) {
 }
 
 void SnapshotWriter::write(double time, long step, const SnapshotFields& f) {
-  if (f.dim != 2 && f.dim != 3) {
-    throw std::invalid_argument(fmt::format("SnapshotFields::dim must be 2 or 3, got {}", f.dim));
-  }
-  const size_t n = f.pressure.size();
-  const size_t d = static_cast<size_t>(f.dim);
-  check_size("position", f.position.size(), n * d);
-  check_size("velocity", f.velocity.size(), n * d);
-  check_size("number_density", f.number_density.size(), n);
-  check_size("density", f.density.size(), n);
-  check_size("phase", f.phase.size(), n);
-  check_size("kind", f.kind.size(), n);
-  check_size("id", f.id.size(), n);
+  write(time, step, SnapshotSlab{f, 0, f.pressure.size()}, SerialCommunicator());
+}
 
+void SnapshotWriter::write(double time, long step, const SnapshotSlab& mine, const Communicator& world) {
+  check_slab(mine);
   const size_t index = entries_.size();
-  write_snapshot_file(out_dir_ / snapshot_relative_path(index), time, step, f);
-  entries_.push_back(Entry{time, step, n});
+  write_snapshot_file(out_dir_ / snapshot_relative_path(index), time, step, mine, world);
+  entries_.push_back(Entry{time, step, mine.total});
   try {
     write_master();
     write_xdmf();
@@ -319,46 +508,25 @@ void SnapshotWriter::write(double time, long step, const SnapshotFields& f) {
   }
 }
 
-void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path, double time,
-                                         long step, const SnapshotFields& f) const {
-  const size_t n = f.pressure.size();
-  const size_t d = static_cast<size_t>(f.dim);
+void SnapshotWriter::send(const SnapshotSlab& mine, const SnapshotFormat& format, const Communicator& world) {
+  check_slab(mine);
+  const std::vector<unsigned char> none;
+  for (const SnapshotDataset& dataset : snapshot_datasets(mine, format)) {
+    if (mine.total == 0) continue;
+    const std::vector<unsigned char> encoded = encoded_chunks(dataset, mine, format.deflate).serialised();
+    for (int r = 1; r < world.size(); ++r) gather_bytes_on_first(world, r == world.rank() ? encoded : none);
+  }
+}
+
+void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path, double time, long step,
+                                         const SnapshotSlab& mine, const Communicator& world) const {
   const std::filesystem::path tmp = temporary_path_for(final_path);
   TempGuard guard{tmp};
   {
     H5Handle file = create_file(tmp);
     const hid_t fid = file.get();
-
-    const bool single = format_.single_precision, deflate = format_.deflate;
-    // Positions, velocities and scalars in the format's precision; a vector padded to three components (XDMF's XYZ).
-    auto write_real = [&](const char* name, std::span<const double> src, size_t cols) {
-      if (!single && cols == 0) {  // as it is
-        write_dataset(fid, tmp, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, src.data(), n, 0, deflate);
-        return;
-      }
-      const size_t width = cols == 0 ? 1 : cols, given = cols == 0 ? 1 : d;
-      std::vector<double> values(n * width, 0.0);
-      for (size_t i = 0; i < n; ++i)
-        for (size_t k = 0; k < given; ++k) values[i * width + k] = src[i * given + k];
-      if (!single) {
-        write_dataset(fid, tmp, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), n, cols, deflate);
-        return;
-      }
-      const std::vector<float> narrow(values.begin(), values.end());
-      write_dataset(fid, tmp, name, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, narrow.data(), n, cols, deflate);
-    };
-    write_real("position", f.position, 3);
-    if (format_.holds("velocity")) write_real("velocity", f.velocity, 3);
-    if (format_.holds("pressure")) write_real("pressure", f.pressure, 0);
-    if (format_.holds("number_density")) write_real("number_density", f.number_density, 0);
-    if (format_.holds("density")) write_real("density", f.density, 0);
-    if (format_.holds("phase"))
-      write_dataset(fid, tmp, "phase", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.phase.data(), n, 0, deflate);
-    write_dataset(fid, tmp, "kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, f.kind.data(), n, 0, deflate);
-    write_dataset(fid, tmp, "id", H5T_STD_U64LE, H5T_NATIVE_UINT64, f.id.data(), n, 0, deflate);
-    std::vector<uint32_t> connectivity(n);
-    for (size_t i = 0; i < n; ++i) connectivity[i] = static_cast<uint32_t>(i);
-    write_dataset(fid, tmp, "connectivity", H5T_STD_U32LE, H5T_NATIVE_UINT32, connectivity.data(), n, 0, deflate);
+    for (const SnapshotDataset& dataset : snapshot_datasets(mine, format_))
+      write_chunked_dataset(fid, tmp, dataset, mine, format_.deflate, world);
 
     write_dataset_attribute(fid, tmp, kPositionSpec.name, "units", kPositionSpec.units);
     for (const FieldSpec& spec : kFieldSpecs)
@@ -369,7 +537,7 @@ void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path
     if (!legend_.code.empty()) write_string_attribute(fid, tmp, "code", legend_.code);
 
     const int64_t step64 = step;
-    const int32_t dim32 = f.dim;
+    const int32_t dim32 = mine.fields.dim;
     write_scalar_attribute(fid, tmp, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time);
     write_scalar_attribute(fid, tmp, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step64);
     write_scalar_attribute(fid, tmp, "dim", H5T_STD_I32LE, H5T_NATIVE_INT32, &dim32);

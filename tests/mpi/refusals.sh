@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # refusals.sh SLIDE MPIEXEC OUT_DIR: a run folder one process cannot read (exit 2 on every process, that one saying why,
 # nothing written), a scene one process alone refuses while it is built (the same), a launcher whose processes MPI
-# does not join (exit 2, nothing written), and a process that fails alone (a full disk) stopping all of them with its
-# message and exit 1.
+# does not join (exit 2, nothing written), a process that fails alone (a full disk) stopping all of them with its
+# message and exit 1, and a run that goes unstable: exit 3 on 3 processes as on one, with the same files (its last good
+# snapshot, from every process's own last good state).
 # (More processes than cells: tests/test_cell_partition.cpp.)
 set -uo pipefail
 slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
@@ -69,5 +70,23 @@ if mount -t tmpfs -o size=60k tmpfs "$disk" 2>/dev/null; then
   fi
 else
   echo "full_disk not checked: no tmpfs can be mounted here (not root)"
+fi
+# Unstable (a sound speed far too low for the water, as tests/test_cli.cpp's Cli.UnstableRunExits3WithSnapshot).
+unstable=(run "$cases/dam_break_2d.yaml" --threads 1 --quiet --set method.sound_speed=0.3
+          --set method.initial_state=lattice)
+"$slide" "${unstable[@]}" --out "$out/unstable_one" >"$out/unstable_one.log" 2>&1
+code_one=$?
+timeout 300 "$mpiexec" --oversubscribe -np 3 "$slide" "${unstable[@]}" --out "$out/unstable_three" \
+  >"$out/unstable_three.log" 2>&1
+code_three=$?
+differ=$(cd "$out/unstable_one" && find . -type f ! -name run.json | sort | while read -r f; do
+  cmp -s "$f" "$out/unstable_three/$f" || echo "$f"; done)
+if [ "$code_one" -ne 3 ] || [ "$code_three" -ne 3 ] || [ -n "$differ" ] ||
+  ! grep -q "unstable at t = .*last good snapshot" "$out/unstable_three.log"; then
+  echo "FAIL unstable: exit $code_one on one process and $code_three on 3 (expected 3), files that differ: $differ"
+  cat "$out/unstable_three.log"
+  failed=1
+else
+  echo "ok unstable: $(grep -m1 "unstable at" "$out/unstable_three.log" | head -c 160); the same files as one process"
 fi
 exit "$failed"
