@@ -25,7 +25,8 @@ std::vector<unsigned char> encoded_chunk(std::span<const unsigned char> rows, st
   uLongf size = compressBound(static_cast<uLong>(plain.size()));
   std::vector<unsigned char> out(size);
   const int rc = compress2(out.data(), &size, plain.data(), static_cast<uLong>(plain.size()), 1);
-  if (rc != Z_OK) throw std::runtime_error("zlib could not compress a snapshot chunk (error " + std::to_string(rc) + ")");
+  if (rc != Z_OK)
+    throw std::runtime_error("zlib could not compress a snapshot chunk (error " + std::to_string(rc) + ")");
   out.resize(size);
   return out;
 }
