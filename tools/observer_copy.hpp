@@ -29,27 +29,31 @@ class ObserverCopy : public StepObserver<D> {
     std::function<bool(double)> due;
     StepObserver<D>* observer;
   };
-  // copy and readers: the first process's; null and none on the others. Snapshots: whether the first's outputs write
-  // one after the step at time t (on the first), and what the others do then: join the collective that writes it
-  // from every process's own particles (tools/snapshot_rows.hpp), which the first's outputs call.
+  // copy and readers: the first process's; null and none on the others. Snapshots, which read the running simulation
+  // rather than the copy (every process gives its own particles: tools/snapshot_rows.hpp): on the first, whether its
+  // outputs write one after the step at time t, and how it writes one where no reader reads the copy; on the others,
+  // how they join the collective that writes it.
   struct Snapshots {
     std::function<bool(double)> due;
-    std::function<void(const Simulation<D>&)> join;
+    std::function<void(const Simulation<D>&)> write, join;
   };
   ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers, Snapshots snapshots = {})
       : world_(&world), copy_(copy), readers_(std::move(readers)), snapshots_(std::move(snapshots)) {}
 
-  // Every process: whether any reader reads after this step, and a snapshot among it (the first process knows); then
-  // the copy first.
+  // Every process: whether any reader reads the copy after this step, and whether a snapshot is due (the first process
+  // knows); the copy is brought up to date only for the readers.
   void after_step(Simulation<D>& sim, double dt) override {
     std::int64_t due[2] = {0, 0};
     for (const Reader& r : readers_) due[0] = due[0] || r.due(sim.time()) ? 1 : 0;
     if (snapshots_.due) due[1] = snapshots_.due(sim.time()) ? 1 : 0;
     world_->max(due, 2);
-    if (due[0] == 0) return;
-    gather(sim);
-    for (const Reader& r : readers_) r.observer->after_step(*copy_, dt);
-    if (!copy_ && due[1] != 0) snapshots_.join(sim);
+    if (due[0] != 0) {
+      gather(sim);
+      for (const Reader& r : readers_) r.observer->after_step(*copy_, dt);  // the first's outputs write the snapshot
+    } else if (due[1] != 0 && copy_) {
+      snapshots_.write(sim);
+    }
+    if (due[1] != 0 && !copy_) snapshots_.join(sim);
   }
 
   // Brings the copy to the running simulation's present state (every process calls it).

@@ -656,11 +656,14 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   const auto join_snapshot = [&](const Simulation<D>& s) { shared_snapshot(IdOrdered<D>(s.particles()), 0.0, 0); };
   if (processes) {
     std::vector<typename ObserverCopy<D>::Reader> readers;
-    typename ObserverCopy<D>::Snapshots snapshots{nullptr, join_snapshot};
+    typename ObserverCopy<D>::Snapshots snapshots{nullptr, nullptr, join_snapshot};
     if (writes) {
-      readers = {{[&o = *outputs](double t) { return o.due(t); }, &*outputs},
+      readers = {{[&o = *outputs](double t) { return o.samples_due(t); }, &*outputs},
                  {[&c = *checkpoints](double t) { return c.due(t); }, &*checkpoints}};
       snapshots.due = [&o = *outputs](double t) { return o.snapshot_due(t); };
+      snapshots.write = [&o = *outputs, &whole](const Simulation<D>& s) {
+        o.write_snapshot_if_due(whole.particles(), s.time(), s.step_count());
+      };
       outputs->write_snapshots_with(
           [&](double time, long step) { shared_snapshot(IdOrdered<D>(sim.particles()), time, step); });
     }

@@ -394,7 +394,7 @@ void RunOutputs<D>::write_initial() {
 
 // after_step's conditions, each in the same words.
 template <int D>
-bool RunOutputs<D>::due(double t) const {
+bool RunOutputs<D>::samples_due(double t) const {
   const auto& ps = scene_.profiles;
   const auto& outlines = scene_.slide_outline_times;
   bool shape_due = false;
@@ -404,7 +404,7 @@ bool RunOutputs<D>::due(double t) const {
   }
   return t >= next_sample_ - eps_ || (profiles_ && next_profile_ < ps.times.size() && t >= ps.times[next_profile_] - 1e-12) ||
          (slide_outline_ && next_outline_ < outlines.size() && t >= outlines[next_outline_] - 1e-12) || shape_due ||
-         (bodies_ && t >= next_body_sample_ - eps_) || t >= next_snapshot_ - eps_;
+         (bodies_ && t >= next_body_sample_ - eps_);
 }
 
 template <int D>
@@ -421,11 +421,15 @@ void RunOutputs<D>::after_step(Simulation<D>& sim, double) {
     sample_bodies();
     next_body_sample_ = next_after(next_body_sample_, scene_.body_sample_interval, t);
   }
-  if (t >= next_snapshot_ - eps_) {
-    write_snapshot(sim.particles(), t, sim.step_count());
-    flush();
-    next_snapshot_ = next_after(next_snapshot_, scene_.output.snapshot_interval, t);
-  }
+  write_snapshot_if_due(sim.particles(), t, sim.step_count());
+}
+
+template <int D>
+void RunOutputs<D>::write_snapshot_if_due(const Particles<D>& P, double t, long step) {
+  if (t < next_snapshot_ - eps_) return;
+  write_snapshot(P, t, step);
+  flush();
+  next_snapshot_ = next_after(next_snapshot_, scene_.output.snapshot_interval, t);
 }
 
 template <int D>

@@ -50,10 +50,14 @@ class RunOutputs : public StepObserver<D> {
   // (tools/observer_copy.hpp), which the copy's owner brings up to date before each step where due() says so.
   RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& observed, const std::filesystem::path& out,
              bool resuming = false);
-  // Whether after_step at time t samples or writes anything; a snapshot among it; and whether write_final writes one.
-  bool due(double t) const;
+  // Whether after_step at time t samples anything (the CSVs), and whether it writes a snapshot; whether write_final
+  // writes one.
+  bool samples_due(double t) const;
   bool snapshot_due(double t) const { return snapshots_ && t >= next_snapshot_ - eps_; }
   bool final_snapshot_due() const;
+  // after_step's snapshot alone: of P (or, where write_snapshots_with is set, of every process's own particles) at
+  // time t and step, where one is due.
+  void write_snapshot_if_due(const Particles<D>& P, double t, long step);
   // Several processes: the first's snapshots are every process's own particles, written by `shared(time, step)`, a
   // collective the others join where snapshot_due and final_snapshot_due say (tools/snapshot_rows.hpp), rather than the
   // observed copy's particles.
