@@ -31,12 +31,31 @@ std::string size_text(double bytes) {
   return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9) : fmt::format("{:.3g} MB", bytes / 1e6);
 }
 
+// ", a quarter of it for each of the 4 processes on this machine": where a machine's limit is shared.
+std::string shared_by(const MemoryLimit& limit, int here) {
+  return limit.per_machine && here > 1 ? fmt::format(", shared by the {} processes of the run on this machine", here)
+                                       : "";
+}
+std::string fewer_here(const MemoryLimit& limit, int here) {
+  return limit.per_machine && here > 1 ? ", or fewer processes on each machine" : "";
+}
+
 std::optional<MemoryLimit> read_memory_limit() {
   try {
     return memory_limit();
   } catch (const std::invalid_argument& e) {
-    throw SceneError("SLIDE_MEMORY_LIMIT", e.what());
+    const std::string what = e.what();
+    throw SceneError(what.starts_with("SLIDE_MACHINE_MEMORY") ? "SLIDE_MACHINE_MEMORY" : "SLIDE_MEMORY_LIMIT", what);
   }
+}
+
+// " on process 1 of 4", or " on the 4 processes of the run on this machine together".
+std::string where_needed(const Communicator* comm, const MemoryLimit& limit, int here) {
+  if (!comm) return "";
+  if (limit.per_machine && here > 1)
+    return fmt::format(" on the {} processes of the run on this machine together (process {} of {} among them)", here,
+                       comm->rank(), comm->size());
+  return fmt::format(" on process {} of {}", comm->rank(), comm->size());
 }
 
 }  // namespace
@@ -87,12 +106,16 @@ void check_particle_budget(SceneBuild<D>& b) {
                                                      "than slide can index (2^32 - 1); use a larger particle_spacing",
                                                      n, b.dp));
   const auto limit = read_memory_limit();
+  // Several processes on one machine each make the whole scene's particles (cases/scene.cpp): each has its even part
+  // of a machine's memory.
   const double bytes = program_resident_bytes() + particle_state_bytes(n, D);
-  if (limit && bytes > limit->total_bytes())
+  const int here = b.machine.count();
+  if (limit && bytes > limit->even_share_bytes(here))
     throw SceneError("particle_spacing",
                      fmt::format("the scene would make about {:.3g} particles at dp = {} m, whose arrays alone need "
-                                 "about {}, more than the {} available ({}); use a larger particle_spacing",
-                                 n, b.dp, size_text(bytes), size_text(limit->total_bytes()), limit->source));
+                                 "about {}, more than the {} available ({}{}); use a larger particle_spacing{}",
+                                 n, b.dp, size_text(bytes), size_text(limit->even_share_bytes(here)), limit->source,
+                                 shared_by(*limit, here), fewer_here(*limit, here)));
 }
 
 // Once the particles are made and their neighbours listed: the run's peak memory (cases/particle_budget.hpp), what
@@ -126,13 +149,24 @@ void check_run_memory(SceneBuild<D>& b) {
                                      process_memory_bytes(in, double(whole[0]), double(whole[1]), comm->rank() == 0);
   }
   const auto limit = read_memory_limit();
-  if (limit && b.scene->memory_estimate_bytes > limit->total_bytes())
+  // A machine's memory (every limit but SLIDE_MEMORY_LIMIT) holds the estimates of the processes on it together, each
+  // its own: the first's is the largest (collectives on every process, whatever its limit).
+  double need = b.scene->memory_estimate_bytes, have = limit ? limit->total_bytes() : 0.0;
+  const int here = b.machine.count();
+  if (comm) {
+    const double estimates = b.machine.sum_here(*comm, need);
+    const double residents = b.machine.sum_here(*comm, limit ? limit->resident_when_read : 0.0);
+    if (limit && limit->per_machine) {
+      need = estimates;
+      have = limit->whole_process ? limit->bytes : limit->bytes + residents;
+    }
+  }
+  if (limit && need > have)
     throw SceneError("particle_spacing",
                      fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak{}, "
-                                 "more than the {} available ({}); use a larger particle_spacing{}",
-                                 whole[0], b.dp, size_text(b.scene->memory_estimate_bytes),
-                                 comm ? fmt::format(" on process {} of {}", comm->rank(), comm->size()) : "",
-                                 size_text(limit->total_bytes()), limit->source,
+                                 "more than the {} available ({}); use a larger particle_spacing{}{}",
+                                 whole[0], b.dp, size_text(need), where_needed(comm, *limit, here),
+                                 size_text(have), limit->source, fewer_here(*limit, here),
                                  comm && comm->rank() == 0 ? " (the first process also holds the whole scene's "
                                                              "particles for the outputs)"
                                                            : ""));

@@ -65,14 +65,15 @@ double run_memory_bytes(const RunMemoryInputs& in) {
 //    made above the program's and MPI's own; taken as 350 B;
 //  * the observers' copy and bringing it up to date (one process's particles at a time): the first process peaked
 //    267 (2-D) and 332 (3-D) B a particle of the copy (mirror images included) above the others; taken as 280 and
-//    350 B, and the snapshot's buffers (run_memory_bytes' 100 and 150 B) where it writes snapshots.
+//    350 B. (The copy writes no snapshot: every process gives its own particles to it, tools/snapshot_rows.hpp, whose
+//    buffers the share's run counts.)
 // Summed, not the largest of the three: the share's run is taken on top of the build's memory, which the allocator
 // keeps, only partly reused. The sum lies above every measured peak: 4 processes of the 3-D bench, estimated
 // 184 MB (the others) and 291 MB (the first) against peaks of 126-130 MB and 235-240 MB.
 double process_memory_bytes(const RunMemoryInputs& share, double made, double copy_particles, bool first) {
   const bool three_d = share.dimension == 3;
   const double mpi = 8.0e6, build = 350.0 * made;
-  const double copy_per_particle = (three_d ? 350.0 : 280.0) + (share.snapshots ? (three_d ? 150.0 : 100.0) : 0.0);
+  const double copy_per_particle = three_d ? 350.0 : 280.0;
   return mpi + build + run_memory_bytes(share) + (first ? copy_per_particle * copy_particles : 0.0);
 }
 
@@ -111,8 +112,8 @@ std::optional<double> read_number_after(const char* file, const std::string& lab
   return std::nullopt;
 }
 
-// "2G", "512M", "100000": bytes.
-double parse_size(const std::string& text) {
+// "2G", "512M", "100000": bytes (`variable` names it in messages).
+double parse_size(const std::string& text, const std::string& variable) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   double unit = 1.0;
@@ -120,9 +121,9 @@ double parse_size(const std::string& text) {
   if (suffix == "k" || suffix == "K") unit = 1e3;
   else if (suffix == "M") unit = 1e6;
   else if (suffix == "G") unit = 1e9;
-  else if (!suffix.empty()) throw std::invalid_argument("SLIDE_MEMORY_LIMIT=" + text + ": expected bytes, or k, M or G");
+  else if (!suffix.empty()) throw std::invalid_argument(variable + "=" + text + ": expected bytes, or k, M or G");
   if (end == text.c_str() || !std::isfinite(v) || v <= 0)
-    throw std::invalid_argument("SLIDE_MEMORY_LIMIT=" + text + ": expected a positive size");
+    throw std::invalid_argument(variable + "=" + text + ": expected a positive size");
   return v * unit;
 }
 
@@ -130,10 +131,12 @@ double parse_size(const std::string& text) {
 
 std::optional<MemoryLimit> memory_limit() {
   if (const char* env = std::getenv("SLIDE_MEMORY_LIMIT"))
-    return MemoryLimit{parse_size(env), "SLIDE_MEMORY_LIMIT", true, 0.0};
+    return MemoryLimit{parse_size(env, "SLIDE_MEMORY_LIMIT"), "SLIDE_MEMORY_LIMIT", true, 0.0, false};
+  if (const char* env = std::getenv("SLIDE_MACHINE_MEMORY"))
+    return MemoryLimit{parse_size(env, "SLIDE_MACHINE_MEMORY"), "SLIDE_MACHINE_MEMORY", true, 0.0, true};
   std::optional<MemoryLimit> best;
   if (const auto kb = read_number_after("/proc/meminfo", "MemAvailable:"))
-    best = MemoryLimit{*kb * 1024.0, "MemAvailable in /proc/meminfo"};
+    best = MemoryLimit{*kb * 1024.0, "MemAvailable in /proc/meminfo", false, 0.0, true};
   std::ifstream max_file("/sys/fs/cgroup/memory.max");
   std::string max_text;
   if (max_file >> max_text && max_text != "max") {
@@ -141,7 +144,8 @@ std::optional<MemoryLimit> memory_limit() {
     double current = 0.0;
     current_file >> current;
     const double headroom = std::strtod(max_text.c_str(), nullptr) - current;
-    if (headroom > 0 && (!best || headroom < best->bytes)) best = MemoryLimit{headroom, "the cgroup's memory.max"};
+    if (headroom > 0 && (!best || headroom < best->bytes))
+      best = MemoryLimit{headroom, "the cgroup's memory.max", false, 0.0, true};
   }
   if (best) best->resident_when_read = resident_bytes_now();
   return best;

@@ -47,18 +47,26 @@ double resident_bytes_now();
 struct MemoryLimit {
   double bytes = 0.0;
   std::string source;  // where the figure comes from, for messages
-  // SLIDE_MEMORY_LIMIT is the process's whole share (a job's allocation); MemAvailable and a cgroup's headroom are what
-  // is free beyond what the process held when they were read (resident_when_read).
+  // SLIDE_MEMORY_LIMIT and SLIDE_MACHINE_MEMORY are whole allocations (a job's); MemAvailable and a cgroup's headroom are
+  // what is free beyond what the process held when they were read (resident_when_read).
   bool whole_process = false;
   double resident_when_read = 0.0;
+  // The machine's, shared by every process of the run on it (all but SLIDE_MEMORY_LIMIT, which is one process's).
+  bool per_machine = false;
   // The limit as a total for this process, to hold a whole-run estimate against (found in review: comparing the
   // estimate with the headroom read after the particles were made counted them twice).
   double total_bytes() const { return whole_process ? bytes : bytes + resident_when_read; }
+  // This process's even part where `processes_here` processes of the run share the machine.
+  double even_share_bytes(int processes_here) const {
+    return (per_machine ? bytes / processes_here : bytes) + (whole_process ? 0.0 : resident_when_read);
+  }
 };
 
-// The memory a run may use: the environment's SLIDE_MEMORY_LIMIT (bytes, or with a k/M/G suffix: a cluster job's
-// share) if set, else the smaller of MemAvailable in /proc/meminfo and a cgroup v2 limit's headroom. Nothing where
-// none of these can be read. Throws std::invalid_argument for a SLIDE_MEMORY_LIMIT that is not a positive size.
+// The memory a run may use: the environment's SLIDE_MEMORY_LIMIT (bytes, or with a k/M/G suffix: one process's share
+// of a cluster job) if set, else SLIDE_MACHINE_MEMORY (the same: what the processes of the run on one machine may use
+// together, as Slurm's --mem gives a job's memory a node), else the smaller of MemAvailable in /proc/meminfo and a
+// cgroup v2 limit's headroom. Nothing where none of these can be read. Throws std::invalid_argument for a size that is
+// not a positive size.
 std::optional<MemoryLimit> memory_limit();
 
 }  // namespace slide::cases

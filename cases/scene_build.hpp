@@ -17,6 +17,7 @@
 #include "cases/initial_state.hpp"
 #include "cases/rheology_keys.hpp"
 #include "cases/scene.hpp"
+#include "cases/same_machine.hpp"
 #include "cases/scene_geometry.hpp"
 #include "coupling/rigid_bodies.hpp"
 #include "fluid/periodic.hpp"
@@ -53,6 +54,8 @@ struct SceneBuild {
   std::unique_ptr<Scene<D>> scene = std::make_unique<Scene<D>>();
   std::unique_ptr<Simulation<D>> sim = std::make_unique<Simulation<D>>();
 
+  // Set by build_scene on several processes: those on this machine, which share its memory (cases/same_machine.hpp).
+  SameMachine machine{{1}};
   // Set by read_fluid_options.
   double dp = 0.0;
   bool close_packed = false;  // hexagonal (2-D) or fcc (3-D): walls cut from the lattice, compressed by settling alone

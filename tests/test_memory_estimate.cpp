@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <stdexcept>
 
 #include "cases/particle_budget.hpp"
 #include "tests/cli_helpers.hpp"
@@ -49,6 +50,26 @@ void expect_bound(const Measured& m) {
 // The estimate is a total for the process; MemAvailable and a cgroup's headroom are what is free beyond what the
 // process held when read, so the two are compared after adding that back (found in review: the particles, made by
 // then, were counted twice). SLIDE_MEMORY_LIMIT is a whole job's share.
+// A machine's memory (SLIDE_MACHINE_MEMORY, MemAvailable, a cgroup's) is shared by the processes of a run on it: each
+// has an even part of it before it makes the scene's particles; SLIDE_MEMORY_LIMIT, one process's, comes first.
+TEST(MemoryEstimate, AMachinesMemoryIsSharedByItsProcesses) {
+  setenv("SLIDE_MACHINE_MEMORY", "2G", 1);
+  const auto machine = cases::memory_limit();
+  setenv("SLIDE_MEMORY_LIMIT", "300M", 1);
+  const auto process = cases::memory_limit();
+  unsetenv("SLIDE_MEMORY_LIMIT");
+  setenv("SLIDE_MACHINE_MEMORY", "two", 1);
+  EXPECT_THROW(cases::memory_limit(), std::invalid_argument);
+  unsetenv("SLIDE_MACHINE_MEMORY");
+  ASSERT_TRUE(machine && process);
+  EXPECT_TRUE(machine->per_machine && machine->whole_process);
+  EXPECT_EQ(machine->even_share_bytes(4), 0.5e9);
+  EXPECT_EQ(machine->even_share_bytes(1), 2e9);
+  EXPECT_FALSE(process->per_machine);
+  EXPECT_EQ(process->even_share_bytes(4), 300e6);
+  EXPECT_EQ((cases::MemoryLimit{100e6, "MemAvailable", false, 30e6, true}.even_share_bytes(4)), 55e6);
+}
+
 TEST(MemoryEstimate, AHeadroomLimitCountsWhatTheProcessHeldWhenRead) {
   EXPECT_EQ((cases::MemoryLimit{100e6, "MemAvailable", false, 30e6}.total_bytes()), 130e6);
   EXPECT_EQ((cases::MemoryLimit{100e6, "SLIDE_MEMORY_LIMIT", true, 30e6}.total_bytes()), 100e6);
@@ -60,6 +81,7 @@ TEST(MemoryEstimate, AHeadroomLimitCountsWhatTheProcessHeldWhenRead) {
   EXPECT_EQ(job->total_bytes(), 2e9);
   if (const auto free = cases::memory_limit()) {  // where /proc/meminfo or a cgroup can be read
     EXPECT_FALSE(free->whole_process);
+    EXPECT_TRUE(free->per_machine);
     EXPECT_GT(free->resident_when_read, 0.0);
     EXPECT_EQ(free->total_bytes(), free->bytes + free->resident_when_read);
   }

@@ -2,16 +2,19 @@
 # memory_guard.sh SLIDE MPIEXEC OUT_DIR: the memory guard holds each process's share of a run against its limit
 # (SLIDE_MEMORY_LIMIT is a process's). The 3-D bench case: every process's estimate on four lies above its peak and
 # below one process's estimate; at a limit between them the scene is refused on one process (exit 2, naming
-# particle_spacing, nothing written) and runs on four, every process's peak below the limit.
+# particle_spacing, nothing written) and runs on four, every process's peak below the limit. A machine's memory
+# (SLIDE_MACHINE_MEMORY, as MemAvailable) is shared by the processes on it: at a limit between one process's estimate
+# and the four's together, one process runs and four on this machine are refused.
 set -uo pipefail
 slide="$(realpath "$1")" mpiexec="$2" out="$(realpath -m "$3")"
 scene="$(realpath "$(dirname "$0")/../../cases/dam_break_bench_3d.yaml")"
 rm -rf "$out"
 mkdir -p "$out"
 run_one() { "$slide" run "$scene" --out "$1" --threads 1 --quiet --set end_time=0.0005; }
-run_four() { "$mpiexec" --oversubscribe -np 4 ${SLIDE_MEMORY_LIMIT:+-x SLIDE_MEMORY_LIMIT} "$slide" run "$scene" \
-  --out "$1" --threads 1 --quiet --set end_time=0.0005; }
-unset SLIDE_MEMORY_LIMIT
+run_four() { "$mpiexec" --oversubscribe -np 4 ${SLIDE_MEMORY_LIMIT:+-x SLIDE_MEMORY_LIMIT} \
+  ${SLIDE_MACHINE_MEMORY:+-x SLIDE_MACHINE_MEMORY} "$slide" run "$scene" --out "$1" --threads 1 --quiet \
+  --set end_time=0.0005; }
+unset SLIDE_MEMORY_LIMIT SLIDE_MACHINE_MEMORY
 run_one "$out/one" || { echo "FAIL: the one-process run"; exit 1; }
 run_four "$out/four" || { echo "FAIL: the four-process run"; exit 1; }
 # The limit halfway between the largest estimate on four and the estimate on one; every peak below its estimate.
@@ -53,3 +56,37 @@ print("ok four processes ran: peaks", ", ".join(f"{p / 1e6:.1f}" for p in peaks)
       f"MB, limit {int(sys.argv[2]) / 1e6:.1f} MB")
 sys.exit(0 if max(peaks) < int(sys.argv[2]) else 1)
 PY
+unset SLIDE_MEMORY_LIMIT
+# The machine's memory halfway between one process's estimate and the sum of the four's.
+machine=$(python3 - "$out" <<'PY'
+import json, sys
+e1 = json.load(open(sys.argv[1] + "/one/run.json"))["memory_estimate_bytes"]
+four = sum(m["memory_estimate_bytes"] for m in json.load(open(sys.argv[1] + "/four/run.json"))["partition"]["memory"])
+if not four > e1:
+    sys.exit(f"four processes' estimates together, {four / 1e6:.1f} MB, are not above one process's, {e1 / 1e6:.1f} MB")
+print(int((four + e1) / 2), int(0.99 * four))
+PY
+) || { echo "FAIL: the machine's estimates"; exit 1; }
+read -r machine just_below <<<"$machine"
+export SLIDE_MACHINE_MEMORY="$machine"
+run_one "$out/one_machine" || { echo "FAIL: one process within the machine's $machine bytes"; exit 1; }
+run_four "$out/four_machine" >"$out/four_machine.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || [ -e "$out/four_machine" ] ||
+  ! grep -q "4 processes of the run on this machine" "$out/four_machine.log"; then
+  echo "FAIL: four processes on a machine of $machine bytes: exit $code (expected 2, nothing written):"
+  cat "$out/four_machine.log"
+  exit 1
+fi
+echo "ok one process ran and four on this machine were refused at $machine bytes: $(head -1 "$out/four_machine.log")"
+# Just below the four estimates together (1 %): the arrays' even part passes, the run's estimates summed do not.
+export SLIDE_MACHINE_MEMORY="$just_below"
+run_four "$out/four_just_below" >"$out/four_just_below.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || [ -e "$out/four_just_below" ] ||
+  ! grep -q "on the 4 processes of the run on this machine together" "$out/four_just_below.log"; then
+  echo "FAIL: four processes on a machine of $just_below bytes: exit $code (expected 2, nothing written):"
+  cat "$out/four_just_below.log"
+  exit 1
+fi
+echo "ok four on this machine refused at $just_below bytes: $(head -1 "$out/four_just_below.log")"
