@@ -145,8 +145,9 @@ void check_run_memory(SceneBuild<D>& b) {
                            static_cast<std::int64_t>(sim.particles().size())};
   if (comm) {
     comm->sum(whole, 2);  // the particles made, and with their images (and other processes' copies: an upper bound)
-    b.scene->memory_estimate_bytes = program_resident_bytes() +
-                                     process_memory_bytes(in, double(whole[0]), double(whole[1]), comm->rank() == 0);
+    const ProcessMemoryInputs process{double(whole[0]), double(whole[1]), comm->rank() == 0,
+                                      b.scene->surge_front.enabled, b.initial_state == InitialState::settled};
+    b.scene->memory_estimate_bytes = program_resident_bytes() + process_memory_bytes(in, process);
   }
   const auto limit = read_memory_limit();
   // A machine's memory (every limit but SLIDE_MEMORY_LIMIT) holds the estimates of the processes on it together, each

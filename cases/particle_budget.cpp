@@ -70,11 +70,21 @@ double run_memory_bytes(const RunMemoryInputs& in) {
 // Summed, not the largest of the three: the share's run is taken on top of the build's memory, which the allocator
 // keeps, only partly reused. The sum lies above every measured peak: 4 processes of the 3-D bench, estimated
 // 184 MB (the others) and 291 MB (the first) against peaks of 126-130 MB and 235-240 MB.
-double process_memory_bytes(const RunMemoryInputs& share, double made, double copy_particles, bool first) {
+// The settled start (coupling/relaxation.cpp, positions_by_id): every process gathers every particle's id and position
+// (8 + 8 D bytes) and keeps the positions by id (8 D bytes), counted, not measured. The copy's neighbour list: the
+// share's run's 18 (3-D) and 12 (2-D) B a listed neighbour (run_memory_bytes). Its fixed parts, found missing at stop
+// 58: the gated dam break (1,355 particles) peaked at 33.2 MB on the first of 4 processes against 32.1 MB estimated.
+double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInputs& p) {
   const bool three_d = share.dimension == 3;
-  const double mpi = 8.0e6, build = 350.0 * made;
-  const double copy_per_particle = three_d ? 350.0 : 280.0;
-  return mpi + build + run_memory_bytes(share) + (first ? copy_per_particle * copy_particles : 0.0);
+  const double mpi = 8.0e6, build = 350.0 * p.made;
+  const double dimension = three_d ? 3.0 : 2.0;
+  const double settling = p.settles ? (16.0 * dimension + 8.0) * p.made : 0.0;
+  const double copy_per_particle = (three_d ? 350.0 : 280.0) +
+                                   (p.copy_lists_neighbours ? (three_d ? 18.0 : 12.0) * share.listed_per_particle : 0.0);
+  // The copy is a second scene: its fixed parts as a run's (below), without the snapshots' (it writes none).
+  const double copy_fixed = 3.5e6 + (share.bodies_or_slides ? 1.0e6 : 0.0) + 1.0e6;
+  return mpi + build + run_memory_bytes(share) + settling +
+         (p.first ? copy_fixed + copy_per_particle * p.copy_particles : 0.0);
 }
 
 double particle_state_bytes(double n, int dimension) {

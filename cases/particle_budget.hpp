@@ -24,11 +24,20 @@ struct RunMemoryInputs {
 // checkpoint replays it). Measured against peak_resident_bytes on every shipped case (tests/test_memory_estimate.cpp).
 double run_memory_bytes(const RunMemoryInputs& in);
 
+// What one process of a run on several holds beside its share's run.
+struct ProcessMemoryInputs {
+  double made = 0.0;            // the whole scene's particles, which every process makes before it keeps its share
+  double copy_particles = 0.0;  // the observers' copy's, mirror images included (tools/observer_copy.hpp)
+  bool first = false;           // the first process: it holds the copy
+  bool copy_lists_neighbours = false;  // the copy lists its neighbours (the surge front reads them)
+  bool settles = false;         // a settled start: every process holds every particle's start position by id
+};
+
 // One process of a run on several (cases::ForProcesses), above the program's own, bytes: an upper bound, the sum of
-// Open MPI's own, the build (every process makes the whole scene's `made` particles before it keeps its share), its
-// share's run (run_memory_bytes of `share`: its owned particles and ghosts, their list), and on the first process
-// the observers' copy of `copy_particles` (tools/observer_copy.hpp). The constants: particle_budget.cpp.
-double process_memory_bytes(const RunMemoryInputs& share, double made, double copy_particles, bool first);
+// Open MPI's own, the build, its share's run (run_memory_bytes of `share`: its owned particles and ghosts, their
+// list), the settled start's positions and their gathering, and on the first process the observers' copy (with its
+// list where it keeps one). The constants: particle_budget.cpp.
+double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInputs& process);
 
 // Bytes of the particles' own arrays (fluid/particles.hpp) for n particles: what any run of them holds at least. The
 // guard before any particle is made refuses a scene whose particles alone would not fit.
