@@ -152,22 +152,28 @@ void check_run_memory(SceneBuild<D>& b) {
   const auto limit = read_memory_limit();
   // A machine's memory (every limit but SLIDE_MEMORY_LIMIT) holds the estimates of the processes on it together, each
   // its own: the first's is the largest (collectives on every process, whatever its limit).
+  // The machine's free memory as the least any of them read, so that they decide alike. A run each of whose processes
+  // holds the whole scene (a resumed run, built whole before it is shared): each its even part.
   double need = b.scene->memory_estimate_bytes, have = limit ? limit->total_bytes() : 0.0;
   const int here = b.machine.count();
   if (comm) {
     const double estimates = b.machine.sum_here(*comm, need);
     const double residents = b.machine.sum_here(*comm, limit ? limit->resident_when_read : 0.0);
+    const double least = b.machine.least_here(*comm, limit ? limit->bytes : 0.0);
     if (limit && limit->per_machine) {
       need = estimates;
-      have = limit->whole_process ? limit->bytes : limit->bytes + residents;
+      have = limit->whole_process ? least : least + residents;
     }
+  } else if (limit) {
+    have = limit->even_share_bytes(here);
   }
   if (limit && need > have)
     throw SceneError("particle_spacing",
                      fmt::format("the run of its {} particles at dp = {} m would need about {} of memory at its peak{}, "
                                  "more than the {} available ({}); use a larger particle_spacing{}{}",
                                  whole[0], b.dp, size_text(need), where_needed(comm, *limit, here),
-                                 size_text(have), limit->source, fewer_here(*limit, here),
+                                 size_text(have), limit->source + (comm ? "" : shared_by(*limit, here)),
+                                 fewer_here(*limit, here),
                                  comm && comm->rank() == 0 ? " (the first process also holds the whole scene's "
                                                              "particles for the outputs)"
                                                            : ""));

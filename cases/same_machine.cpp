@@ -14,15 +14,30 @@ constexpr std::size_t kNameBytes = 256;  // a host name fits (HOST_NAME_MAX is 6
 
 int SameMachine::count() const { return static_cast<int>(std::count(here.begin(), here.end(), char(1))); }
 
-double SameMachine::sum_here(const Communicator& comm, double mine) const {
-  // Every process's figure to every process (whole bytes: exact integer sums), then those on this machine summed.
+namespace {
+// Every process's figure on every process (whole numbers: exact integer sums).
+std::vector<std::int64_t> everyones(const Communicator& comm, double mine) {
   std::vector<std::int64_t> all(static_cast<std::size_t>(comm.size()), 0);
   all[static_cast<std::size_t>(comm.rank())] = static_cast<std::int64_t>(mine);
   comm.sum(all.data(), all.size());
+  return all;
+}
+}  // namespace
+
+double SameMachine::sum_here(const Communicator& comm, double mine) const {
+  const std::vector<std::int64_t> all = everyones(comm, mine);
   double sum = 0.0;
   for (std::size_t r = 0; r < all.size(); ++r)
     if (here[r]) sum += double(all[r]);
   return sum;
+}
+
+double SameMachine::least_here(const Communicator& comm, double mine) const {
+  const std::vector<std::int64_t> all = everyones(comm, mine);
+  double least = mine;
+  for (std::size_t r = 0; r < all.size(); ++r)
+    if (here[r]) least = std::min(least, double(all[r]));
+  return least;
 }
 
 SameMachine same_machine(const Communicator& comm) {

@@ -11,8 +11,9 @@ namespace slide::cases {
 struct SameMachine {
   std::vector<char> here;  // here[r]: process r runs on this machine (this process included)
   int count() const;
-  // Collective: the sum of `mine` over the processes on this machine.
+  // Collective: the sum, and the least, of `mine` over the processes on this machine (whole numbers).
   double sum_here(const Communicator& comm, double mine) const;
+  double least_here(const Communicator& comm, double mine) const;
 };
 
 // Collective: which processes share this machine. One process alone: itself.

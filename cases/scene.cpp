@@ -58,7 +58,7 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
   // Several processes make the particles each (the same), then initialise() shares them, a collective: a refusal before
   // it on one process alone (a file it cannot read, its memory) is agreed first, and the others stop with it.
   std::optional<SceneError> refused;
-  if (shared) b.machine = same_machine(*share);  // (every process gets here: what it refuses comes after)
+  b.machine = for_processes.machine;
   try {
     make_particles(b);
   } catch (const SceneError& e) {

@@ -10,6 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "cases/same_machine.hpp"
 #include "cases/gauge_records_spec.hpp"
 #include "cases/schema.hpp"
 #include "coupling/equilibrium_column.hpp"
@@ -184,6 +185,8 @@ struct RefusedOnAnotherProcess : SceneError {
 struct ForProcesses {
   std::shared_ptr<const Communicator> share;
   bool observers_copy = false;
+  // The run's processes on this machine, which share its memory (cases/same_machine.hpp): the memory guard's.
+  SameMachine machine{{1}};
 };
 template <int D>
 std::unique_ptr<Scene<D>> build_scene(const YAML::Node& resolved, const std::string& default_name,

@@ -16,6 +16,12 @@ TEST(SnapshotChunk, ShuffleGathersEachByteOfTheElements) {
   // Three elements of four bytes: byte 0 of each, then byte 1 of each, ...; the byte past them stays last.
   EXPECT_EQ(shuffled(bytes, 4), (std::vector<unsigned char>{0, 10, 20, 1, 11, 21, 2, 12, 22, 3, 13, 23, 99}));
   EXPECT_EQ(shuffled(bytes, 1), bytes);
+  // Padded with zeros to 20 bytes: five elements, the fourth given in part (byte 12), the fifth not at all.
+  EXPECT_EQ(shuffled(bytes, 4, 20), (std::vector<unsigned char>{0, 10, 20, 99, 0, 1, 11, 21, 0, 0, 2, 12, 22, 0, 0, 3,
+                                                                13, 23, 0, 0}));
+  std::vector<unsigned char> padded = bytes;
+  padded.resize(20, 0);
+  EXPECT_EQ(shuffled(bytes, 4, 20), shuffled(padded, 4));
 }
 
 TEST(SnapshotChunk, AChunkIsItsRowsPaddedWithZerosAndDeflatesBackToThem) {

@@ -302,7 +302,8 @@ struct PreparedRun {
 
 // A new run of its resolved scene: check the output folder, build (its settling is the run's: settle_before_the_run).
 template <int D>
-std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const std::optional<YAML::Node>& resolved) {
+std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const std::optional<YAML::Node>& resolved,
+                                              const cases::SameMachine& machine) {
   // The output folder is checked before anything is built or written (the case's name may come from the scene).
   const std::string name = (*resolved)["name"].as<std::string>();
   PreparedRun<D> run;
@@ -313,11 +314,12 @@ std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const st
   if (why) std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
   const bool copy = !why && writes && args.world && args.world->size() > 1;
   if (copy)
-    run.observers_copy = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {nullptr, true});
+    run.observers_copy =
+        build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {nullptr, true, machine});
   // The build shares the scene (a collective): every process builds, or none.
   if (refused_anywhere(args, why.has_value() || (copy && !run.observers_copy))) return std::nullopt;
   // Several processes: each keeps and lists its share of the scene (cases::ForProcesses).
-  run.scene = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {args.world, false});
+  run.scene = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {args.world, false, machine});
   if (!run.scene) return std::nullopt;
   run.header = {checkpoint_writer(), std::filesystem::absolute(args.scene).string(), args.overrides,
                 YAML::Dump(*resolved)};
@@ -341,7 +343,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
 // checkpoint's state put back; or, from a checkpoint taken while settling, built to settle on from it. Refusals name
 // why (exit 2). The checkpoint is read already (read_resumed_checkpoint).
 template <int D>
-std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Checkpoint checkpoint) {
+std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Checkpoint checkpoint,
+                                                  const cases::SameMachine& machine) {
   PreparedRun<D> run;
   run.out = args.resume;
   run.resumed_from = std::move(checkpoint);
@@ -373,7 +376,8 @@ std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Chec
   try {
     run.scene = cases::build_scene<D>(cases::load_yaml_text(h.resolved_scene), scene_file.stem().string(),
                                    scene_file.parent_path().empty() ? "." : scene_file.parent_path(),
-                                   h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled);
+                                   h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled,
+                                   {nullptr, false, machine});
   } catch (const cases::YamlTextRefused& e) {
     std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
               << "\n";
@@ -579,8 +583,12 @@ json partition_json(const Domain<D>& domain, double imbalance, const std::vector
 template <int D>
 int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolved, std::optional<Checkpoint> checkpoint,
               Clock::time_point setup_start, double resident_bytes_at_start) {
+  // Which processes share this machine's memory (a collective: every process gets here).
+  const cases::SameMachine machine =
+      args.world && args.world->size() > 1 ? cases::same_machine(*args.world) : cases::SameMachine{{1}};
   std::optional<PreparedRun<D>> run =
-      checkpoint ? prepare_resumed_run<D>(args, std::move(*checkpoint)) : prepare_new_run<D>(args, resolved);
+      checkpoint ? prepare_resumed_run<D>(args, std::move(*checkpoint), machine)
+                 : prepare_new_run<D>(args, resolved, machine);
   if (refused_anywhere(args, !run)) return 2;
   const bool several = args.world && args.world->size() > 1;
   if (several) {  // before it settles

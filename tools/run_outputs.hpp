@@ -47,7 +47,8 @@ class RunOutputs : public StepObserver<D> {
   RunOutputs(const cases::Scene<D>& scene, const std::filesystem::path& out, bool resuming = false)
       : RunOutputs(scene, *scene.simulation, out, resuming) {}
   // The outputs of a run on several processes: the scene's, read from the first process's whole copy of the run
-  // (tools/observer_copy.hpp), which the copy's owner brings up to date before each step where due() says so.
+  // (tools/observer_copy.hpp), which the copy's owner brings up to date after each step where samples_due() says so
+  // (snapshots: write_snapshots_with).
   RunOutputs(const cases::Scene<D>& scene, const Simulation<D>& observed, const std::filesystem::path& out,
              bool resuming = false);
   // Whether after_step at time t samples anything (the CSVs), and whether it writes a snapshot; whether write_final

@@ -8,9 +8,10 @@
 
 namespace slide::tools {
 
-// HDF5's shuffle filter (H5Zshuffle.c): byte k of every element, for k = 0 .. element_bytes - 1, one after another
-// (bytes past the last whole element stay at the end).
-std::vector<unsigned char> shuffled(std::span<const unsigned char> bytes, std::size_t element_bytes);
+// HDF5's shuffle filter (H5Zshuffle.c) of `bytes` padded with zeros to `size` bytes (at least bytes.size()): byte k of
+// every element, for k = 0 .. element_bytes - 1, one after another (bytes past the last whole element stay at the end).
+std::vector<unsigned char> shuffled(std::span<const unsigned char> bytes, std::size_t element_bytes,
+                                    std::size_t size = 0);
 
 // A chunk as the file holds it: `rows` (the chunk's rows, fewer than chunk_bytes only in a dataset's last chunk) padded
 // with zeros to chunk_bytes (HDF5's default fill value), then, deflated, shuffled and compressed by zlib at level 1 as

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <functional>
 #include <stdexcept>
@@ -326,98 +327,126 @@ void check_slab(const SnapshotSlab& slab) {
                                             slab.first_row, slab.first_row + n, slab.total, chunk));
 }
 
-// One process's chunks of a dataset, encoded (tools/snapshot_chunk.hpp): the index of the first, their sizes, and
-// their bytes one after another; as bytes to send.
-struct EncodedChunks {
-  uint64_t first = 0;
-  std::vector<uint64_t> sizes;
-  std::vector<unsigned char> bytes;
+// One process's rows of a dataset as it sends them to the first, one buffer: the first row, the rows, the number of
+// chunks and each one's size (deflated: encoded, tools/snapshot_chunk.hpp; none without), then their bytes (or the
+// rows' own, undeflated). Read in place (PieceView): the first process holds one copy of a process's piece.
+constexpr size_t kPieceHeader = 3 * 8;
 
-  std::vector<unsigned char> serialised() const {
-    std::vector<unsigned char> out((2 + sizes.size()) * 8 + bytes.size());
-    const uint64_t count = sizes.size();
-    std::memcpy(out.data(), &first, 8);
-    std::memcpy(out.data() + 8, &count, 8);
-    if (count) std::memcpy(out.data() + 16, sizes.data(), count * 8);
-    if (!bytes.empty()) std::memcpy(out.data() + 16 + count * 8, bytes.data(), bytes.size());
-    return out;
+struct PieceView {
+  uint64_t first_row = 0, rows = 0, chunks = 0;
+  const unsigned char* sizes = nullptr;  // chunks x uint64
+  const unsigned char* bytes = nullptr;
+  explicit PieceView(const std::vector<unsigned char>& piece) {
+    if (piece.size() < kPieceHeader) return;
+    std::memcpy(&first_row, piece.data(), 8);
+    std::memcpy(&rows, piece.data() + 8, 8);
+    std::memcpy(&chunks, piece.data() + 16, 8);
+    sizes = piece.data() + kPieceHeader;
+    bytes = sizes + 8 * chunks;
   }
-  static EncodedChunks parsed(const std::vector<unsigned char>& in) {
-    EncodedChunks e;
-    if (in.empty()) return e;
-    uint64_t count = 0;
-    std::memcpy(&e.first, in.data(), 8);
-    std::memcpy(&count, in.data() + 8, 8);
-    e.sizes.resize(count);
-    if (count) std::memcpy(e.sizes.data(), in.data() + 16, count * 8);
-    e.bytes.assign(in.begin() + static_cast<std::ptrdiff_t>(16 + count * 8), in.end());
-    return e;
+  uint64_t size(size_t k) const {
+    uint64_t v = 0;
+    std::memcpy(&v, sizes + 8 * k, 8);
+    return v;
   }
 };
 
-// The slab's chunks of a dataset, encoded by the threads (each chunk by one: the bytes do not depend on how many).
-EncodedChunks encoded_chunks(const SnapshotDataset& dataset, const SnapshotSlab& slab, bool deflate) {
+std::vector<unsigned char> piece_with_header(uint64_t first_row, uint64_t rows, const std::vector<uint64_t>& sizes,
+                                             size_t data_bytes) {
+  std::vector<unsigned char> piece(kPieceHeader + 8 * sizes.size() + data_bytes);
+  const uint64_t chunks = sizes.size();
+  std::memcpy(piece.data(), &first_row, 8);
+  std::memcpy(piece.data() + 8, &rows, 8);
+  std::memcpy(piece.data() + 16, &chunks, 8);
+  if (chunks) std::memcpy(piece.data() + kPieceHeader, sizes.data(), 8 * chunks);
+  return piece;
+}
+
+// The slab's rows of a dataset as a piece: deflated, each chunk encoded by one thread (the bytes do not depend on how
+// many); undeflated, the rows as they are.
+std::vector<unsigned char> dataset_piece(const SnapshotDataset& dataset, const SnapshotSlab& slab, bool deflate) {
   const size_t n = slab.fields.pressure.size(), chunk = SnapshotWriter::chunk_rows(slab.total);
-  EncodedChunks out;
-  if (n == 0) return out;
-  out.first = slab.first_row / chunk;
+  if (!deflate) {
+    std::vector<unsigned char> piece = piece_with_header(slab.first_row, n, {}, n * dataset.row_bytes());
+    if (n > 0) dataset.fill(0, n, piece.data() + kPieceHeader);
+    return piece;
+  }
   const size_t chunks = (n + chunk - 1) / chunk;
   std::vector<std::vector<unsigned char>> each(chunks);
-  std::vector<std::string> errors(chunks);
+  std::vector<std::exception_ptr> failed(chunks);
   parallel_for_blocks(chunks, n, [&](size_t c) {
-    try {
+    try {  // (an exception must not leave a thread)
       const size_t begin = c * chunk, count = std::min(chunk, n - begin);
       std::vector<unsigned char> rows(count * dataset.row_bytes());
       dataset.fill(begin, count, rows.data());
-      each[c] = encoded_chunk(rows, chunk * dataset.row_bytes(), stored_bytes(dataset.stored), deflate);
-    } catch (const std::exception& e) {  // (an exception must not leave a thread)
-      errors[c] = e.what();
+      each[c] = encoded_chunk(rows, chunk * dataset.row_bytes(), stored_bytes(dataset.stored), true);
+    } catch (...) {
+      failed[c] = std::current_exception();
     }
   });
-  for (size_t c = 0; c < chunks; ++c) {
-    if (!errors[c].empty()) throw std::runtime_error(errors[c]);
-    out.sizes.push_back(each[c].size());
-    out.bytes.insert(out.bytes.end(), each[c].begin(), each[c].end());
-    std::vector<unsigned char>().swap(each[c]);
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  std::vector<uint64_t> sizes;
+  size_t bytes = 0;
+  for (const auto& e : each) {
+    sizes.push_back(e.size());
+    bytes += e.size();
   }
-  return out;
+  std::vector<unsigned char> piece = piece_with_header(slab.first_row, n, sizes, bytes);
+  unsigned char* at = piece.data() + kPieceHeader + 8 * chunks;
+  for (auto& e : each) {
+    if (!e.empty()) std::memcpy(at, e.data(), e.size());
+    at += e.size();
+    std::vector<unsigned char>().swap(e);
+  }
+  return piece;
 }
 
-// Creates a dataset of `total` rows in chunks (shuffled and deflated where asked) and writes every process's encoded
-// chunks into it, the first's, then each other process's in turn (a collective each: SnapshotWriter::send is the
-// others' side), so that the first holds no more than one process's chunks of one dataset at a time.
-void write_chunked_dataset(hid_t file, const std::filesystem::path& path, const SnapshotDataset& dataset,
-                           const SnapshotSlab& mine, bool deflate, const Communicator& world) {
+// Creates a dataset of `total` rows, deflated in chunks (with the byte shuffle) or contiguous, and writes every
+// process's piece into it, the first's, then each other process's in turn (a collective each: SnapshotWriter::send is
+// the others' side), so that the first holds no more than one process's piece of one dataset at a time. Deflated, the
+// chunks go in as they are (H5Dwrite_chunk); contiguous, the rows (H5Dwrite of their rows).
+void write_dataset_of_processes(hid_t file, const std::filesystem::path& path, const SnapshotDataset& dataset,
+                                const SnapshotSlab& mine, bool deflate, const Communicator& world) {
   const size_t total = mine.total, chunk = SnapshotWriter::chunk_rows(total);
   const int rank = dataset.cols == 0 ? 1 : 2;
   const hsize_t dims[2] = {static_cast<hsize_t>(total), static_cast<hsize_t>(dataset.cols)};
   H5Handle space = check(H5Screate_simple(rank, dims, nullptr), H5Sclose, path,
                          fmt::format("cannot create dataspace for /{}", dataset.name));
   H5Handle dcpl = untimed_properties(H5P_DATASET_CREATE, path);
-  if (total > 0) {
+  if (deflate && total > 0) {
     const hsize_t chunk_dims[2] = {static_cast<hsize_t>(chunk), static_cast<hsize_t>(dataset.cols)};
     check(H5Pset_chunk(dcpl.get(), rank, chunk_dims), path, fmt::format("cannot chunk /{}", dataset.name));
-    if (deflate) {
-      check(H5Pset_shuffle(dcpl.get()), path, fmt::format("cannot shuffle /{}", dataset.name));
-      check(H5Pset_deflate(dcpl.get(), 1), path,
-            fmt::format("cannot deflate /{} (HDF5 without zlib?)", dataset.name));
-    }
+    check(H5Pset_shuffle(dcpl.get()), path, fmt::format("cannot shuffle /{}", dataset.name));
+    check(H5Pset_deflate(dcpl.get(), 1), path, fmt::format("cannot deflate /{} (HDF5 without zlib?)", dataset.name));
   }
-  H5Handle ds = check(H5Dcreate2(file, dataset.name, file_type(dataset.stored), space.get(), H5P_DEFAULT, dcpl.get(),
-                                 H5P_DEFAULT),
+  const hid_t type = file_type(dataset.stored);
+  H5Handle ds = check(H5Dcreate2(file, dataset.name, type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
                       H5Dclose, path, fmt::format("cannot create dataset /{}", dataset.name));
-  const auto write = [&](const EncodedChunks& e) {
-    const unsigned char* at = e.bytes.data();
-    for (size_t k = 0; k < e.sizes.size(); ++k) {
-      const hsize_t offset[2] = {static_cast<hsize_t>((e.first + k) * chunk), 0};
-      check(H5Dwrite_chunk(ds.get(), H5P_DEFAULT, 0, offset, e.sizes[k], at), path,
+  const auto write = [&](const std::vector<unsigned char>& piece) {
+    const PieceView p(piece);
+    if (p.rows == 0) return;
+    if (!deflate) {  // the rows [first_row, first_row + rows), held as the file stores them
+      const hsize_t start[2] = {p.first_row, 0}, count[2] = {p.rows, dataset.cols};
+      H5Handle rows = check(H5Screate_simple(rank, count, nullptr), H5Sclose, path, "cannot create dataspace");
+      H5Handle in_file = check(H5Dget_space(ds.get()), H5Sclose, path, "cannot get dataspace");
+      check(H5Sselect_hyperslab(in_file.get(), H5S_SELECT_SET, start, nullptr, count, nullptr), path,
+            fmt::format("cannot select rows of /{}", dataset.name));
+      check(H5Dwrite(ds.get(), type, rows.get(), in_file.get(), H5P_DEFAULT, p.bytes), path,
             fmt::format("cannot write dataset /{}", dataset.name));
-      at += e.sizes[k];
+      return;
+    }
+    const unsigned char* at = p.bytes;
+    for (size_t k = 0; k < p.chunks; ++k) {
+      const hsize_t offset[2] = {static_cast<hsize_t>(p.first_row + k * chunk), 0};
+      check(H5Dwrite_chunk(ds.get(), H5P_DEFAULT, 0, offset, p.size(k), at), path,
+            fmt::format("cannot write dataset /{}", dataset.name));
+      at += p.size(k);
     }
   };
   if (total > 0) {
-    write(encoded_chunks(dataset, mine, deflate));
-    for (int r = 1; r < world.size(); ++r) write(EncodedChunks::parsed(gather_bytes_on_first(world, {})));
+    write(dataset_piece(dataset, mine, deflate));
+    for (int r = 1; r < world.size(); ++r) write(gather_bytes_on_first(world, {}));
   }
   check(ds.close(), path, fmt::format("cannot close dataset /{}", dataset.name));
 }
@@ -513,8 +542,8 @@ void SnapshotWriter::send(const SnapshotSlab& mine, const SnapshotFormat& format
   const std::vector<unsigned char> none;
   for (const SnapshotDataset& dataset : snapshot_datasets(mine, format)) {
     if (mine.total == 0) continue;
-    const std::vector<unsigned char> encoded = encoded_chunks(dataset, mine, format.deflate).serialised();
-    for (int r = 1; r < world.size(); ++r) gather_bytes_on_first(world, r == world.rank() ? encoded : none);
+    const std::vector<unsigned char> piece = dataset_piece(dataset, mine, format.deflate);
+    for (int r = 1; r < world.size(); ++r) gather_bytes_on_first(world, r == world.rank() ? piece : none);
   }
 }
 
@@ -526,7 +555,7 @@ void SnapshotWriter::write_snapshot_file(const std::filesystem::path& final_path
     H5Handle file = create_file(tmp);
     const hid_t fid = file.get();
     for (const SnapshotDataset& dataset : snapshot_datasets(mine, format_))
-      write_chunked_dataset(fid, tmp, dataset, mine, format_.deflate, world);
+      write_dataset_of_processes(fid, tmp, dataset, mine, format_.deflate, world);
 
     write_dataset_attribute(fid, tmp, kPositionSpec.name, "units", kPositionSpec.units);
     for (const FieldSpec& spec : kFieldSpecs)

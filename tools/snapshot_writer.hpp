@@ -21,9 +21,9 @@
 //       referencing the snapshot files by relative path: open it in ParaView (either Xdmf reader).
 //       Units and codes appear there too, as <Information> elements.
 //
-// Datasets are stored in chunks of whole rows (chunk_rows), each encoded by the process that holds its rows
+// Deflated datasets are stored in chunks of whole rows (chunk_rows), each encoded by the process that holds its rows
 // (tools/snapshot_chunk.hpp) and written as it is by the first process, in the same order whatever the number of
-// processes: the file's bytes do not depend on it. (HDF5's own parallel writes, libhdf5-openmpi's collective writes
+// processes: the file's bytes do not depend on it. Undeflated ones are contiguous, each process's rows written in turn. (HDF5's own parallel writes, libhdf5-openmpi's collective writes
 // of each process's slab, left bytes that depend on the process count where the data are deflated: 1,650 of a 100,000
 // value dataset's 24,707 bytes differed between 1 and 4 processes, with HDF5 1.10.8; uncompressed, they were the same
 // for any count but not the serial library's.)
