@@ -37,15 +37,18 @@ print(int((largest + e1) / 2))
 PY
 ) || { echo "FAIL: the estimates"; exit 1; }
 echo "limit: $limit bytes a process"
+# expect_refused NAME PATTERN: the run NAME (its log $out/NAME.log) exited 2, wrote nothing, and said PATTERN.
+expect_refused() {
+  local code="$?" name="$1" pattern="$2"
+  if [ "$code" -ne 2 ] || [ -e "$out/$name" ] || ! grep -q "$pattern" "$out/$name.log"; then
+    echo "FAIL: $name: exit $code (expected 2, nothing written, the log saying: $pattern):"
+    cat "$out/$name.log"
+    exit 1
+  fi
+}
 export SLIDE_MEMORY_LIMIT="$limit"
 run_one "$out/one_limited" >"$out/one_limited.log" 2>&1
-code=$?
-if [ "$code" -ne 2 ] || [ -e "$out/one_limited" ] || ! grep -q "particle_spacing: the run of its" "$out/one_limited.log"
-then
-  echo "FAIL: one process at the limit: exit $code (expected 2, nothing written):"
-  cat "$out/one_limited.log"
-  exit 1
-fi
+expect_refused one_limited "particle_spacing: the run of its"
 echo "ok one process refused: $(cat "$out/one_limited.log")"
 run_four "$out/four_limited" || { echo "FAIL: four processes at the limit"; exit 1; }
 python3 - "$out" "$limit" <<'PY' || { echo "FAIL: a peak on four above the limit"; exit 1; }
@@ -71,22 +74,10 @@ read -r machine just_below <<<"$machine"
 export SLIDE_MACHINE_MEMORY="$machine"
 run_one "$out/one_machine" || { echo "FAIL: one process within the machine's $machine bytes"; exit 1; }
 run_four "$out/four_machine" >"$out/four_machine.log" 2>&1
-code=$?
-if [ "$code" -ne 2 ] || [ -e "$out/four_machine" ] ||
-  ! grep -q "4 processes of the run on this machine" "$out/four_machine.log"; then
-  echo "FAIL: four processes on a machine of $machine bytes: exit $code (expected 2, nothing written):"
-  cat "$out/four_machine.log"
-  exit 1
-fi
+expect_refused four_machine "4 processes of the run on this machine"
 echo "ok one process ran and four on this machine were refused at $machine bytes: $(head -1 "$out/four_machine.log")"
 # Just below the four estimates together (1 %): the arrays' even part passes, the run's estimates summed do not.
 export SLIDE_MACHINE_MEMORY="$just_below"
 run_four "$out/four_just_below" >"$out/four_just_below.log" 2>&1
-code=$?
-if [ "$code" -ne 2 ] || [ -e "$out/four_just_below" ] ||
-  ! grep -q "on the 4 processes of the run on this machine together" "$out/four_just_below.log"; then
-  echo "FAIL: four processes on a machine of $just_below bytes: exit $code (expected 2, nothing written):"
-  cat "$out/four_just_below.log"
-  exit 1
-fi
+expect_refused four_just_below "on the 4 processes of the run on this machine together"
 echo "ok four on this machine refused at $just_below bytes: $(head -1 "$out/four_just_below.log")"
