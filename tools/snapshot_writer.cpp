@@ -362,8 +362,29 @@ std::vector<unsigned char> piece_with_header(uint64_t first_row, uint64_t rows, 
   return piece;
 }
 
-// The slab's rows of a dataset as a piece: deflated, each chunk encoded by one thread (the bytes do not depend on how
-// many); undeflated, the rows as they are.
+// The slab's chunks [first, first + count) of a dataset, encoded, each by one thread (the bytes do not depend on how
+// many).
+std::vector<std::vector<unsigned char>> encoded_chunks(const SnapshotDataset& dataset, const SnapshotSlab& slab,
+                                                       size_t first, size_t count) {
+  const size_t n = slab.fields.pressure.size(), chunk = SnapshotWriter::chunk_rows(slab.total);
+  std::vector<std::vector<unsigned char>> each(count);
+  std::vector<std::exception_ptr> failed(count);
+  parallel_for_blocks(count, count * chunk, [&](size_t k) {
+    try {  // (an exception must not leave a thread)
+      const size_t begin = (first + k) * chunk, rows_here = std::min(chunk, n - begin);
+      std::vector<unsigned char> rows(rows_here * dataset.row_bytes());
+      dataset.fill(begin, rows_here, rows.data());
+      each[k] = encoded_chunk(rows, chunk * dataset.row_bytes(), stored_bytes(dataset.stored), true);
+    } catch (...) {
+      failed[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  return each;
+}
+
+// The slab's rows of a dataset as a piece to send: deflated, its chunks encoded; undeflated, the rows as they are.
 std::vector<unsigned char> dataset_piece(const SnapshotDataset& dataset, const SnapshotSlab& slab, bool deflate) {
   const size_t n = slab.fields.pressure.size(), chunk = SnapshotWriter::chunk_rows(slab.total);
   if (!deflate) {
@@ -371,21 +392,7 @@ std::vector<unsigned char> dataset_piece(const SnapshotDataset& dataset, const S
     if (n > 0) dataset.fill(0, n, piece.data() + kPieceHeader);
     return piece;
   }
-  const size_t chunks = (n + chunk - 1) / chunk;
-  std::vector<std::vector<unsigned char>> each(chunks);
-  std::vector<std::exception_ptr> failed(chunks);
-  parallel_for_blocks(chunks, n, [&](size_t c) {
-    try {  // (an exception must not leave a thread)
-      const size_t begin = c * chunk, count = std::min(chunk, n - begin);
-      std::vector<unsigned char> rows(count * dataset.row_bytes());
-      dataset.fill(begin, count, rows.data());
-      each[c] = encoded_chunk(rows, chunk * dataset.row_bytes(), stored_bytes(dataset.stored), true);
-    } catch (...) {
-      failed[c] = std::current_exception();
-    }
-  });
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  std::vector<std::vector<unsigned char>> each = encoded_chunks(dataset, slab, 0, (n + chunk - 1) / chunk);
   std::vector<uint64_t> sizes;
   size_t bytes = 0;
   for (const auto& e : each) {
@@ -393,7 +400,7 @@ std::vector<unsigned char> dataset_piece(const SnapshotDataset& dataset, const S
     bytes += e.size();
   }
   std::vector<unsigned char> piece = piece_with_header(slab.first_row, n, sizes, bytes);
-  unsigned char* at = piece.data() + kPieceHeader + 8 * chunks;
+  unsigned char* at = piece.data() + kPieceHeader + 8 * each.size();
   for (auto& e : each) {
     if (!e.empty()) std::memcpy(at, e.data(), e.size());
     at += e.size();
@@ -444,10 +451,24 @@ void write_dataset_of_processes(hid_t file, const std::filesystem::path& path, c
       at += p.size(k);
     }
   };
-  if (total > 0) {
+  // This process's own rows: deflated, as many chunks at a time as there are threads, each written once encoded (the
+  // memory of a few chunks, as HDF5's own filter held).
+  const size_t n = mine.fields.pressure.size();
+  if (deflate && n > 0) {
+    const size_t chunks = (n + chunk - 1) / chunk, batch = static_cast<size_t>(std::max(1, thread_count()));
+    for (size_t c = 0; c < chunks; c += batch) {
+      const auto each = encoded_chunks(dataset, mine, c, std::min(batch, chunks - c));
+      for (size_t k = 0; k < each.size(); ++k) {
+        const hsize_t offset[2] = {static_cast<hsize_t>(mine.first_row + (c + k) * chunk), 0};
+        check(H5Dwrite_chunk(ds.get(), H5P_DEFAULT, 0, offset, each[k].size(), each[k].data()), path,
+              fmt::format("cannot write dataset /{}", dataset.name));
+      }
+    }
+  } else if (total > 0) {
     write(dataset_piece(dataset, mine, deflate));
-    for (int r = 1; r < world.size(); ++r) write(gather_bytes_on_first(world, {}));
   }
+  if (total > 0)
+    for (int r = 1; r < world.size(); ++r) write(gather_bytes_on_first(world, {}));
   check(ds.close(), path, fmt::format("cannot close dataset /{}", dataset.name));
 }
 
