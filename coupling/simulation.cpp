@@ -774,37 +774,18 @@ double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
 }
 
 template <int D>
-void Simulation<D>::save_state(StateWriter& out) const {
-  const_cast<Particles<D>&>(domain_.particles).for_each_array([&](auto& v) { out.put(v); });
+void Simulation<D>::save_state_after_particles(StateWriter& out) const {
   out.put(domain_.particles.body_frames.body);
   out.put(domain_.particles.body_frames.offset);
   out.put(domain_.particles.body_frames.normal);
-  out.put(domain_.particles.ghost_source);
-  out.put(domain_.particles.ghost_flip);
-  out.put(domain_.particles.ghost_offset);
-  out.put<std::uint64_t>(domain_.particles.removed_count);
   out.put(time_);
   out.put(step_count_);
   out.put(limit_counts_);
   out.put(largest_number_density_ratio_);
   out.put(largest_number_density_ratio_time_);
-  out.put(position_at_build_);
   out.put(rebuilds_);
   out.put(viscous_solves_);
   out.put(last_viscous_solve_);
-  // The corrected gradient's matrices of the last pressure stage: the semi-implicit predictor reads them in the next
-  // step (predict_with_viscosity_and_gravity), so a resumed run needs them to stay bit-identical to the straight one.
-  out.put(correction_current_);
-  std::vector<double> correction;
-  correction.reserve(domain_.particles.gradient_correction.size() * D * D);
-  for (const Mat<D>& L : domain_.particles.gradient_correction) correction.insert(correction.end(), L.data(), L.data() + D * D);
-  out.put(correction);
-  out.put<std::uint64_t>(left_the_domain_.size());
-  for (const auto& l : left_the_domain_) {
-    out.put(l.id);
-    out.put(l.time);
-    out.put(l.position);
-  }
   out.put(options.velocity_damping_rate);
   out.put(rheology_suspended_);
   out.put(bodies_ != nullptr);
@@ -813,54 +794,30 @@ void Simulation<D>::save_state(StateWriter& out) const {
 
 template <int D>
 void Simulation<D>::restore_state(StateReader& in) {
-  const std::size_t made = domain_.particles.real_count() + domain_.particles.removed_count;
-  domain_.particles.for_each_array([&](auto& v) { in.get(v); });
+  const bool correction = read_particle_section(in);
   in.get(domain_.particles.body_frames.body);
   in.get(domain_.particles.body_frames.offset);
   in.get(domain_.particles.body_frames.normal);
-  pair_weights_.forget();
-  in.get(domain_.particles.ghost_source);
-  in.get(domain_.particles.ghost_flip);
-  in.get(domain_.particles.ghost_offset);
-  if (domain_.particles.ghost_flip.size() != domain_.particles.ghost_source.size() ||
-      domain_.particles.ghost_offset.size() != domain_.particles.ghost_source.size() ||
-      domain_.particles.ghost_source.size() > domain_.particles.size())
-    throw std::runtime_error("the checkpoint's ghosts do not match its particles");
-  domain_.particles.removed_count = in.get<std::uint64_t>();
-  if (domain_.particles.real_count() + domain_.particles.removed_count != made)
-    throw std::runtime_error("the checkpoint's particles are not the scene's");
   in.get(time_);
   in.get(step_count_);
   in.get(limit_counts_);
   in.get(largest_number_density_ratio_);
   in.get(largest_number_density_ratio_time_);
-  in.get(position_at_build_);
   in.get(rebuilds_);
   in.get(viscous_solves_);
   in.get(last_viscous_solve_);
-  in.get(correction_current_);
-  std::vector<double> correction;
-  in.get(correction);
-  if (correction.size() % (D * D) != 0 || (correction_current_ && correction.size() != domain_.particles.size() * D * D))
-    throw std::runtime_error("the checkpoint's gradient matrices are not its particles'");
-  domain_.particles.gradient_correction.resize(correction.size() / (D * D));
-  for (std::size_t k = 0; k < domain_.particles.gradient_correction.size(); ++k)
-    std::copy_n(correction.data() + k * D * D, D * D, domain_.particles.gradient_correction[k].data());
-  left_the_domain_.resize(in.get<std::uint64_t>());
-  for (auto& l : left_the_domain_) {
-    in.get(l.id);
-    in.get(l.time);
-    in.get(l.position);
-  }
   in.get(options.velocity_damping_rate);
   in.get(rheology_suspended_);
   if (in.get<bool>() != (bodies_ != nullptr)) throw std::runtime_error("the checkpoint's bodies are not the scene's");
   if (bodies_) bodies_->restore_state(in);
-  // The neighbour list as it was built: from the positions of that moment, in the present order (no re-sort).
+  for (std::size_t i = 0; i < domain_.particles.real_count(); ++i)
+    if (domain_.particles.body_frame[i] >= static_cast<std::int32_t>(domain_.particles.body_frames.body.size()))
+      throw std::runtime_error("the checkpoint's body particles are not its bodies'");
+  // Stored, given ghosts, a neighbour list (built from the positions of the last re-sort) and the ghosts' fields as
+  // the saved run held them; the semi-implicit predictor's buffer is filled by the next step.
+  store_as_one_process(correction);
   scratch_.assign(domain_.particles.size(), Vec<D>::Zero());
   predictor_acceleration_.clear();
-  grid_.bin(position_at_build_, [&P = domain_.particles](std::uint32_t j) { return P.order_key(j); });
-  build_neighbor_list(grid_, position_at_build_, list_radius(), list_, domain_.particles.real_count());
 }
 
 template class Simulation<2>;

@@ -157,11 +157,34 @@ class Simulation {
   std::optional<Instability> step(double dt, TimeStepLimit limit);
 
   // Everything a step depends on beyond the scene (tools/checkpoint.hpp): the particles, time and counters, the
-  // neighbour list's state (the positions it was built at, in the same order, so that it is rebuilt at the same
-  // step), what was recorded so far, and the bodies'. Restoring expects a simulation made from the same scene and
-  // initialised; afterwards the next step is the one the saved run would have taken, bit for bit.
+  // neighbour list's state (the positions it was built at, so that it is rebuilt at the same step), what was recorded
+  // so far, and the bodies'. Restoring expects a simulation made from the same scene and initialised, on one process;
+  // afterwards the particles are stored as one process held them (as adopt_whole_state leaves them) and the next step
+  // is the one the saved run would have taken, bit for bit.
+  //
+  // The state is its particle section, then the rest (save_state_after_particles). The particle section holds every
+  // real particle in id order and those that left the domain by time, then id, whichever process held them, so that
+  // a checkpoint does not say how many processes wrote it (tools/shared_checkpoint.hpp writes one from every
+  // process's own particles):
+  //   u8 gradient matrices present, u64 record bytes, u64 particles, the records, u64 left, the left particles
+  // A record: every per-particle array's value (fluid/process_halo.hpp), the position the neighbour list was built at,
+  // and the corrected gradient's matrix of the last pressure stage where present (the semi-implicit predictor reads
+  // it in the next step).
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
+  // This process's own particles' records, in id order, and their ids.
+  struct StateRecords {
+    std::vector<unsigned char> bytes;
+    std::vector<ParticleId> ids;
+    std::size_t record_bytes = 0, id_offset = 0;  // a record's bytes, and where in it its id lies
+    bool correction = false;
+  };
+  StateRecords state_records() const;
+  static void put_particle_section_head(StateWriter& out, bool correction, std::uint64_t record_bytes,
+                                        std::uint64_t particles);
+  // The left particles' part of the section, sorted by time, then id.
+  static void put_left_particles(StateWriter& out, std::vector<LeftParticle> left);
+  void save_state_after_particles(StateWriter& out) const;
 
   // For tests of the order independence (fluid/domain.hpp): after every re-sort the owned particles are stored in an
   // order drawn at random from `seed`, as a process's share of them would be; every result must stay the same to the
@@ -230,6 +253,15 @@ class Simulation {
   void check_periodic_setup() const;
   void check_mirror_setup() const;
   void prepare_processes();
+  // A state record (save_state) of particle i, and one read back onto the end of the particles.
+  void append_state_record(std::size_t i, bool correction, std::vector<unsigned char>& out) const;
+  void read_state_record(const unsigned char*& in, bool correction);
+  // After the real particles and their build positions (and gradient matrices) were read in any order: stores them
+  // as one process holds them at this step (by cell of the positions of the last re-sort, by id within a cell), with
+  // their ghosts, neighbour list (unless an observers' copy needs none) and the ghosts' fields.
+  void store_as_one_process(bool correction);
+  // The particle section (save_state) read back in id order; returns whether it holds gradient matrices.
+  bool read_particle_section(StateReader& in);
 
   Domain<D> domain_;
   std::shared_ptr<RigidBodies<D>> bodies_;

@@ -1,10 +1,25 @@
 // The first process's whole copy of a run on several processes (coupling/simulation.hpp, adopt_whole_state).
 #include <algorithm>
+#include <numeric>
 
 #include "coupling/simulation.hpp"
 #include "fluid/process_halo.hpp"
 
 namespace slide {
+
+template <int D>
+void Simulation<D>::append_state_record(std::size_t i, bool correction, std::vector<unsigned char>& out) const {
+  ProcessHalo<D>::append_record(domain_.particles, i, out);
+  halo_bytes::put(out, position_at_build_[i]);
+  if (correction) halo_bytes::put(out, domain_.particles.gradient_correction[i]);
+}
+
+template <int D>
+void Simulation<D>::read_state_record(const unsigned char*& in, bool correction) {
+  ProcessHalo<D>::read_record(domain_.particles, in);
+  position_at_build_.push_back(halo_bytes::get<Vec<D>>(in));
+  if (correction) domain_.particles.gradient_correction.push_back(halo_bytes::get<Mat<D>>(in));
+}
 
 template <int D>
 std::vector<unsigned char> Simulation<D>::owned_state_bytes() const {
@@ -15,17 +30,22 @@ std::vector<unsigned char> Simulation<D>::owned_state_bytes() const {
   halo_bytes::put<std::uint64_t>(out, n);
   halo_bytes::put<std::uint64_t>(out, left_the_domain_.size());
   halo_bytes::put<std::uint8_t>(out, correction_current_ ? 1 : 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    ProcessHalo<D>::append_record(P, i, out);
-    halo_bytes::put(out, position_at_build_[i]);
-    if (correction_current_) halo_bytes::put(out, P.gradient_correction[i]);
-  }
+  for (std::size_t i = 0; i < n; ++i) append_state_record(i, correction_current_, out);
   for (const LeftParticle& l : left_the_domain_) {
     halo_bytes::put(out, l.id);
     halo_bytes::put(out, l.time);
     for (int d = 0; d < D; ++d) halo_bytes::put(out, l.position[static_cast<std::size_t>(d)]);
   }
   return out;
+}
+
+// Empties the particles (ghosts, build positions, gradient matrices, left particles) for records to be read in.
+template <int D>
+void clear_particles(Particles<D>& P, std::vector<Vec<D>>& position_at_build, std::vector<LeftParticle>& left) {
+  P.for_each_array([](auto& v) { v.clear(); });
+  P.gradient_correction.clear();
+  position_at_build.clear();
+  left.clear();
 }
 
 template <int D>
@@ -35,10 +55,7 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
   auto& P = domain_.particles;
   const std::size_t made = P.id_end();
   domain_.drop_ghosts();
-  P.for_each_array([](auto& v) { v.clear(); });
-  P.gradient_correction.clear();
-  position_at_build_.clear();
-  left_the_domain_.clear();
+  clear_particles(P, position_at_build_, left_the_domain_);
   bool correction = false;  // the same on every process
   for (int r = 0; r < processes; ++r) {  // one process's particles at a time: no buffer holds the whole scene
     const std::vector<unsigned char> piece = owned_by(r);
@@ -46,11 +63,7 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
     if (piece.empty()) continue;
     const auto n = halo_bytes::get<std::uint64_t>(in), left = halo_bytes::get<std::uint64_t>(in);
     correction = halo_bytes::get<std::uint8_t>(in) != 0;
-    for (std::uint64_t k = 0; k < n; ++k) {
-      ProcessHalo<D>::read_record(P, in);
-      position_at_build_.push_back(halo_bytes::get<Vec<D>>(in));
-      if (correction) P.gradient_correction.push_back(halo_bytes::get<Mat<D>>(in));
-    }
+    for (std::uint64_t k = 0; k < n; ++k) read_state_record(in, correction);
     for (std::uint64_t k = 0; k < left; ++k) {
       LeftParticle l;
       l.id = halo_bytes::get<ParticleId>(in);
@@ -65,6 +78,25 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
   std::sort(left_the_domain_.begin(), left_the_domain_.end(), [](const LeftParticle& a, const LeftParticle& b) {
     return a.time < b.time || (a.time == b.time && a.id < b.id);
   });
+  store_as_one_process(correction);
+  time_ = running.time_;
+  step_count_ = running.step_count_;
+  limit_counts_ = running.limit_counts_;
+  largest_number_density_ratio_ = running.largest_number_density_ratio_;
+  largest_number_density_ratio_time_ = running.largest_number_density_ratio_time_;
+  rebuilds_ = running.rebuilds_;
+  viscous_solves_ = running.viscous_solves_;
+  last_viscous_solve_ = running.last_viscous_solve_;
+  options.velocity_damping_rate = running.options.velocity_damping_rate;
+  rheology_suspended_ = running.rheology_suspended_;
+  // The bodies are the same on every process (each steps its own copy of the rigid world with the same combined
+  // forces): the copy reads the running simulation's.
+  if (bodies_ || running.bodies_) bodies_ = running.bodies_;
+}
+
+template <int D>
+void Simulation<D>::store_as_one_process(bool correction) {
+  auto& P = domain_.particles;
   // Re-sorted as the last re-sort left them, the ghosts and the list made from those positions (update_neighbors),
   // then the present positions and the ghosts' fields.
   std::vector<Vec<D>> now = P.position;
@@ -97,19 +129,87 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
   }
   pair_weights_.forget();
   correction_current_ = correction;
-  time_ = running.time_;
-  step_count_ = running.step_count_;
-  limit_counts_ = running.limit_counts_;
-  largest_number_density_ratio_ = running.largest_number_density_ratio_;
-  largest_number_density_ratio_time_ = running.largest_number_density_ratio_time_;
-  rebuilds_ = running.rebuilds_;
-  viscous_solves_ = running.viscous_solves_;
-  last_viscous_solve_ = running.last_viscous_solve_;
-  options.velocity_damping_rate = running.options.velocity_damping_rate;
-  rheology_suspended_ = running.rheology_suspended_;
-  // The bodies are the same on every process (each steps its own copy of the rigid world with the same combined
-  // forces): the copy reads the running simulation's.
-  if (bodies_ || running.bodies_) bodies_ = running.bodies_;
+}
+
+template <int D>
+typename Simulation<D>::StateRecords Simulation<D>::state_records() const {
+  const auto& P = domain_.particles;
+  StateRecords r;
+  r.correction = correction_current_;
+  r.record_bytes = ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>) + (r.correction ? sizeof(Mat<D>) : 0);
+  bool past_id = false;
+  P.for_each_array([&](const auto& v) {
+    if (static_cast<const void*>(&v) == static_cast<const void*>(&P.id)) past_id = true;
+    if (!past_id) r.id_offset += sizeof(typename std::decay_t<decltype(v)>::value_type);
+  });
+  std::vector<std::size_t> by_id(P.real_count());
+  std::iota(by_id.begin(), by_id.end(), std::size_t{0});
+  std::sort(by_id.begin(), by_id.end(), [&P](std::size_t a, std::size_t b) { return P.id[a] < P.id[b]; });
+  r.bytes.reserve(by_id.size() * r.record_bytes);
+  r.ids.reserve(by_id.size());
+  for (const std::size_t i : by_id) {
+    append_state_record(i, r.correction, r.bytes);
+    r.ids.push_back(P.id[i]);
+  }
+  return r;
+}
+
+template <int D>
+void Simulation<D>::put_particle_section_head(StateWriter& out, bool correction, std::uint64_t record_bytes,
+                                              std::uint64_t particles) {
+  out.put<std::uint8_t>(correction ? 1 : 0);
+  out.put(record_bytes);
+  out.put(particles);
+}
+
+template <int D>
+void Simulation<D>::put_left_particles(StateWriter& out, std::vector<LeftParticle> left) {
+  std::sort(left.begin(), left.end(), [](const LeftParticle& a, const LeftParticle& b) {
+    return a.time < b.time || (a.time == b.time && a.id < b.id);
+  });
+  out.put<std::uint64_t>(left.size());
+  for (const auto& l : left) {
+    out.put(l.id);
+    out.put(l.time);
+    out.put(l.position);
+  }
+}
+
+template <int D>
+void Simulation<D>::save_state(StateWriter& out) const {
+  const StateRecords r = state_records();
+  put_particle_section_head(out, r.correction, r.record_bytes, r.ids.size());
+  out.append(r.bytes.data(), r.bytes.size());
+  put_left_particles(out, left_the_domain_);
+  save_state_after_particles(out);
+}
+
+// The particle section (save_state) read back, the particles in id order; returns whether it holds gradient matrices.
+template <int D>
+bool Simulation<D>::read_particle_section(StateReader& in) {
+  auto& P = domain_.particles;
+  const std::size_t made = P.real_count() + P.removed_count;
+  const bool correction = in.get<std::uint8_t>() != 0;
+  const auto record_bytes = in.get<std::uint64_t>(), particles = in.get<std::uint64_t>();
+  const std::size_t expected = ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>) + (correction ? sizeof(Mat<D>) : 0);
+  if (record_bytes != expected || particles > made)
+    throw std::runtime_error("the checkpoint's particles are not the scene's");
+  if (particles > in.remaining() / record_bytes) throw std::runtime_error("the state is truncated");
+  domain_.drop_ghosts();
+  clear_particles(P, position_at_build_, left_the_domain_);
+  const unsigned char* records = in.take_bytes(particles * record_bytes);
+  for (std::uint64_t k = 0; k < particles; ++k) read_state_record(records, correction);
+  for (std::uint64_t k = 0; k < particles; ++k)
+    if (P.id[k] >= made || (k > 0 && P.id[k] <= P.id[k - 1]))
+      throw std::runtime_error("the checkpoint's particles are not the scene's");
+  P.removed_count = made - particles;
+  left_the_domain_.resize(in.get<std::uint64_t>());
+  for (auto& l : left_the_domain_) {
+    in.get(l.id);
+    in.get(l.time);
+    in.get(l.position);
+  }
+  return correction;
 }
 
 template std::vector<unsigned char> Simulation<2>::owned_state_bytes() const;

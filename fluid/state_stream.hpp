@@ -38,6 +38,11 @@ class StateWriter {
     put<std::uint64_t>(text.size());
     bytes_.insert(bytes_.end(), text.begin(), text.end());
   }
+  // Bytes as they are, without a length (a section whose length the stream says before it).
+  void append(const void* data, std::size_t n) {
+    const auto* p = static_cast<const char*>(data);
+    bytes_.insert(bytes_.end(), p, p + n);
+  }
   // The same name as StateReader::io, so that one template lists a type's fields for both directions.
   template <class T>
   void io(const T& value) {
@@ -87,6 +92,14 @@ class StateReader {
     get(value);
   }
   bool at_end() const { return at_ == bytes_.size(); }
+  // The next n bytes as they are (StateWriter::append), in place.
+  const unsigned char* take_bytes(std::size_t n) {
+    if (n > bytes_.size() - at_) throw std::runtime_error("the state is truncated");
+    const auto* p = reinterpret_cast<const unsigned char*>(bytes_.data() + at_);
+    at_ += n;
+    return p;
+  }
+  std::size_t remaining() const { return bytes_.size() - at_; }
 
  private:
   void take(void* out, std::size_t n) {

@@ -81,25 +81,37 @@ void commit_temporary_file(const std::filesystem::path& tmp, const std::filesyst
   fsync_directory(path.parent_path());
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
-  const std::filesystem::path tmp = temporary_path_for(path);
-  Fd f(::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-  if (f.fd < 0) {
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path path)
+    : path_(std::move(path)), tmp_(temporary_path_for(path_)) {
+  fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
     const int err = errno;
-    throw std::runtime_error(fmt::format("cannot create '{}' (writing '{}'): {}", tmp.string(),
-                                         path.string(), errno_text(err)));
+    throw std::runtime_error(fmt::format("cannot create '{}' (writing '{}'): {}", tmp_.string(), path_.string(),
+                                         errno_text(err)));
   }
-  auto fail = [&](const char* what, int err) {
-    f.close_now();
-    remove_quietly(tmp);
-    throw std::runtime_error(
-        fmt::format("cannot {} '{}' (writing '{}'): {}", what, tmp.string(), path.string(),
-                    errno_text(err)));
-  };
-  const char* p = content.data();
-  size_t left = content.size();
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (fd_ >= 0) {
+    ::close(fd_);
+    remove_quietly(tmp_);
+  }
+}
+
+void AtomicFileWriter::fail(const char* what, int err) {
+  ::close(fd_);
+  fd_ = -1;
+  remove_quietly(tmp_);
+  throw std::runtime_error(
+      fmt::format("cannot {} '{}' (writing '{}'): {}", what, tmp_.string(), path_.string(), errno_text(err)));
+}
+
+void AtomicFileWriter::append(std::string_view bytes) {
+  if (fd_ < 0) throw std::logic_error("AtomicFileWriter::append after commit");
+  const char* p = bytes.data();
+  size_t left = bytes.size();
   while (left > 0) {
-    const ssize_t w = ::write(f.fd, p, left);
+    const ssize_t w = ::write(fd_, p, left);
     if (w < 0) {
       if (errno == EINTR) continue;
       fail("write", errno);
@@ -107,19 +119,32 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     p += w;
     left -= static_cast<size_t>(w);
   }
-  if (::fsync(f.fd) != 0) fail("fsync", errno);
-  if (const int err = f.close_now(); err != 0) {
-    remove_quietly(tmp);
-    throw std::runtime_error(fmt::format("cannot close '{}' (writing '{}'): {}", tmp.string(),
-                                         path.string(), errno_text(err)));
-  }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+}
+
+void AtomicFileWriter::commit() {
+  if (fd_ < 0) throw std::logic_error("AtomicFileWriter::commit twice");
+  if (::fsync(fd_) != 0) fail("fsync", errno);
+  const int closed = ::close(fd_);
+  fd_ = -1;
+  if (closed != 0) {
     const int err = errno;
-    remove_quietly(tmp);
-    throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", tmp.string(),
-                                         path.string(), errno_text(err)));
+    remove_quietly(tmp_);
+    throw std::runtime_error(
+        fmt::format("cannot close '{}' (writing '{}'): {}", tmp_.string(), path_.string(), errno_text(err)));
   }
-  fsync_directory(path.parent_path());
+  if (::rename(tmp_.c_str(), path_.c_str()) != 0) {
+    const int err = errno;
+    remove_quietly(tmp_);
+    throw std::runtime_error(
+        fmt::format("cannot rename '{}' to '{}': {}", tmp_.string(), path_.string(), errno_text(err)));
+  }
+  fsync_directory(path_.parent_path());
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  AtomicFileWriter file(path);
+  file.append(content);
+  file.commit();
 }
 
 CsvWriter::CsvWriter(std::filesystem::path path, std::vector<std::string> columns)

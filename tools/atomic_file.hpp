@@ -20,6 +20,24 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 // On failure removes `tmp` and throws std::runtime_error naming the paths and the errno text.
 void commit_temporary_file(const std::filesystem::path& tmp, const std::filesystem::path& path);
 
+// A file written in parts under temporary_path_for(path); commit() fsync()s it and renames it over `path`. Destroyed
+// uncommitted (a failure on the way), the temporary file is removed and an existing `path` is left untouched. Throws
+// std::runtime_error (with the path and the errno text) on failure.
+class AtomicFileWriter {
+ public:
+  explicit AtomicFileWriter(std::filesystem::path path);
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+  ~AtomicFileWriter();
+  void append(std::string_view bytes);
+  void commit();
+
+ private:
+  [[noreturn]] void fail(const char* what, int err);
+  std::filesystem::path path_, tmp_;
+  int fd_ = -1;
+};
+
 // Writes `content` to temporary_path_for(path), fsync()s it and renames it over `path`.
 // Throws std::runtime_error (with the path and the errno text) on failure; the temporary file
 // is removed and an existing `path` is left untouched.

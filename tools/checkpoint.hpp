@@ -5,13 +5,16 @@
 // with Bullet's world as its journal) and of the outputs (tools/run_outputs.hpp). A run writes one at the scene's
 // output.checkpoint_interval and when it is interrupted (SIGINT, SIGTERM).
 //
-// Layout: "SLIDECKP", a format number, the header's and the state's bytes (fluid/state_stream.hpp), and an FNV-1a
-// hash of all that, so a torn or edited file is refused rather than half read. Written atomically.
+// Layout: "SLIDECKP", a format number, the header's bytes (fluid/state_stream.hpp), the state's bytes to the end, and
+// an FNV-1a hash of all that, so a torn or edited file is refused rather than half read. Written atomically, in parts
+// where the state comes from several processes (tools/shared_checkpoint.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "tools/atomic_file.hpp"
 
 namespace slide::tools {
 
@@ -47,6 +50,18 @@ class CheckpointError : public std::runtime_error {
 
 std::filesystem::path checkpoint_path(const std::filesystem::path& run_dir);
 void write_checkpoint(const std::filesystem::path& run_dir, const Checkpoint& checkpoint);
+
+// checkpoint.bin written as its state comes: the header, the state's parts in order, then (commit) the checksum.
+class CheckpointFile {
+ public:
+  CheckpointFile(const std::filesystem::path& run_dir, const CheckpointHeader& header);
+  void append(const void* data, std::size_t bytes);
+  void commit();
+
+ private:
+  AtomicFileWriter file_;
+  std::uint64_t hash_;
+};
 // Throws CheckpointError when the file is missing, damaged or of another format; the version is for the caller to
 // compare (it names both).
 Checkpoint read_checkpoint(const std::filesystem::path& run_dir);

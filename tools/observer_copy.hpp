@@ -4,8 +4,9 @@
 // it its owned particles, one process after another, and the copy takes them in as one process would hold them at
 // that step (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a
 // one-process run, gauges and fronts alike. The copy lists no neighbours (Simulation::make_observers_copy) unless an
-// output reads them. Snapshots are the exception: every process gives its own particles, and the processes holding a
-// chunk's rows encode it (tools/snapshot_rows.hpp).
+// output reads them. Snapshots and checkpoints are the exceptions: every process gives its own particles, and the
+// processes holding a chunk's rows encode it (tools/snapshot_rows.hpp); a checkpoint's particles come to the first
+// process one id range at a time (tools/shared_checkpoint.hpp).
 //
 // The copy's memory and the gathering's time on the first process grow with the whole scene (run.json's
 // partition.observer_copy gives the gathers and their seconds, partition.memory every process's peak; docs/using.md
@@ -29,24 +30,28 @@ class ObserverCopy : public StepObserver<D> {
     std::function<bool(double)> due;
     StepObserver<D>* observer;
   };
-  // copy and readers: the first process's; null and none on the others. Snapshots, which read the running simulation
-  // rather than the copy (every process gives its own particles: tools/snapshot_rows.hpp): on the first, whether its
-  // outputs write one after the step at time t, and how it writes one where no reader reads the copy; on the others,
-  // how they join the collective that writes it.
-  struct Snapshots {
+  // copy and readers: the first process's; null and none on the others. Snapshots and checkpoints, which read the
+  // running simulation rather than the copy (every process gives its own particles: tools/snapshot_rows.hpp,
+  // tools/shared_checkpoint.hpp): on the first, whether one is due after the step at time t, and how it writes one
+  // (a snapshot: where no reader reads the copy); on the others, how they join the collective that writes it.
+  struct Collective {
     std::function<bool(double)> due;
     std::function<void(const Simulation<D>&)> write, join;
   };
-  ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers, Snapshots snapshots = {})
-      : world_(&world), copy_(copy), readers_(std::move(readers)), snapshots_(std::move(snapshots)) {}
+  ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers,
+               Collective snapshots = {}, Collective checkpoints = {})
+      : world_(&world), copy_(copy), readers_(std::move(readers)), snapshots_(std::move(snapshots)),
+        checkpoints_(std::move(checkpoints)) {}
 
-  // Every process: whether any reader reads the copy after this step, and whether a snapshot is due (the first process
-  // knows); the copy is brought up to date only for the readers.
+  // Every process: whether any reader reads the copy after this step, and whether a snapshot or a checkpoint is due
+  // (the first process knows); the copy is brought up to date only for the readers. The checkpoint comes last, as on
+  // one process: it records the outputs as they are after the step.
   void after_step(Simulation<D>& sim, double dt) override {
-    std::int64_t due[2] = {0, 0};
+    std::int64_t due[3] = {0, 0, 0};
     for (const Reader& r : readers_) due[0] = due[0] || r.due(sim.time()) ? 1 : 0;
     if (snapshots_.due) due[1] = snapshots_.due(sim.time()) ? 1 : 0;
-    world_->max(due, 2);
+    if (checkpoints_.due) due[2] = checkpoints_.due(sim.time()) ? 1 : 0;
+    world_->max(due, 3);
     if (due[0] != 0) {
       gather(sim);
       for (const Reader& r : readers_) r.observer->after_step(*copy_, dt);  // the first's outputs write the snapshot
@@ -54,6 +59,7 @@ class ObserverCopy : public StepObserver<D> {
       snapshots_.write(sim);
     }
     if (due[1] != 0 && !copy_) snapshots_.join(sim);
+    if (due[2] != 0) (copy_ ? checkpoints_.write : checkpoints_.join)(sim);
   }
 
   // Brings the copy to the running simulation's present state (every process calls it).
@@ -85,7 +91,7 @@ class ObserverCopy : public StepObserver<D> {
   const Communicator* world_;
   Simulation<D>* copy_;
   std::vector<Reader> readers_;
-  Snapshots snapshots_;
+  Collective snapshots_, checkpoints_;
   long gathers_ = 0;
   double seconds_ = 0.0;
 };

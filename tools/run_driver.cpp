@@ -28,6 +28,7 @@
 #include "fluid/parallel.hpp"
 #include "tools/atomic_file.hpp"
 #include "tools/checkpoint.hpp"
+#include "tools/shared_checkpoint.hpp"
 #include "tools/observer_copy.hpp"
 #include "tools/snapshot_rows.hpp"
 #include "tools/output_folder.hpp"
@@ -393,58 +394,75 @@ std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Chec
   return run;
 }
 
-// checkpoint.bin of the simulation's state at its time and step, with `state` after it; taken while settling or not.
+// checkpoint.bin of the running simulation's state at its time and step, with `after` after it (the outputs', the
+// settling's); taken while settling or not. A collective on several processes (`world`): every process gives its own
+// particles (tools/shared_checkpoint.hpp), and `after` is the first's (null on the others).
 template <int D>
-void write_state_checkpoint(const PreparedRun<D>& run, const Simulation<D>& sim, const StateWriter& state, bool settling) {
-  Checkpoint c{run.header, state.bytes()};
-  c.header.time = sim.time();
-  c.header.step = sim.step_count();
-  c.header.settling = settling;
-  write_checkpoint(run.out, c);
+void write_state_checkpoint(const PreparedRun<D>& run, const Simulation<D>& sim, const StateWriter* after,
+                            bool settling, const Communicator& world) {
+  std::optional<CheckpointFile> file;
+  StateWriter rest;
+  if (after) {
+    CheckpointHeader header = run.header;
+    header.time = sim.time();
+    header.step = sim.step_count();
+    header.settling = settling;
+    file.emplace(run.out, header);
+    sim.save_state_after_particles(rest);
+    rest.append(after->bytes().data(), after->bytes().size());
+  }
+  write_shared_checkpoint(world, sim, file ? &*file : nullptr, after ? &rest : nullptr);
 }
 
 // Writes checkpoint.bin at the scene's interval of simulated time (after the outputs have sampled the step), and on
-// demand (an interrupted run).
+// demand (an interrupted run). On several processes every process has one and writes together (write(); the first's
+// outputs, null on the others); the first decides when (due), and its ObserverCopy has the others join.
 template <int D>
 class CheckpointObserver : public StepObserver<D> {
  public:
-  CheckpointObserver(const PreparedRun<D>& run, RunOutputs<D>& outputs, const Simulation<D>& sim)
-      : run_(run), outputs_(outputs), sim_(sim), interval_(run.scene->output.checkpoint_interval),
+  CheckpointObserver(const PreparedRun<D>& run, RunOutputs<D>* outputs, const Simulation<D>& sim,
+                     const Communicator& world)
+      : run_(run), outputs_(outputs), sim_(sim), world_(world), interval_(run.scene->output.checkpoint_interval),
         next_(interval_ > 0 ? interval_ : std::numeric_limits<double>::infinity()) {}
   bool due(double t) const { return interval_ > 0.0 && t >= next_ - 1e-12 * std::max(1.0, next_); }
-  void after_step(Simulation<D>& sim, double) override {
-    if (!due(sim.time())) return;
+  void after_step(Simulation<D>& sim, double) override { write_if_due(sim.time()); }
+  void write_if_due(double t) {
+    if (!due(t)) return;
     next_ += interval_;
-    if (sim.time() >= next_) next_ = sim.time() + interval_;
+    if (t >= next_) next_ = t + interval_;
     write();
   }
   void write() {
-    outputs_.flush();
-    StateWriter state;
-    sim_.save_state(state);
-    outputs_.save_state(state);
-    state.put(next_);
-    write_state_checkpoint(run_, sim_, state, false);
+    if (!outputs_) return write_state_checkpoint(run_, sim_, nullptr, false, world_);
+    outputs_->flush();
+    StateWriter after;
+    outputs_->save_state(after);
+    after.put(next_);
+    write_state_checkpoint(run_, sim_, &after, false, world_);
   }
   void restore(StateReader& in) { in.get(next_); }
 
  private:
   const PreparedRun<D>& run_;
-  RunOutputs<D>& outputs_;
+  RunOutputs<D>* outputs_;
   const Simulation<D>& sim_;
+  const Communicator& world_;
   double interval_, next_;
 };
 
 // A run stopped by a signal while its water settled: a checkpoint of the simulation and the settling (from which
-// --resume settles on, then runs), and run.json saying so. Returns the exit code, 128 + the signal.
+// --resume settles on, then runs; a collective on several processes), and run.json saying so (the first process).
+// Returns the exit code, 128 + the signal.
 template <int D>
-int stop_while_settling(const PreparedRun<D>& run, const Simulation<D>& sim, const Settling<D>& settling) {
-  std::filesystem::create_directories(run.out);
-  StateWriter state;
-  sim.save_state(state);
-  settling.save_state(state);
-  write_state_checkpoint(run, sim, state, true);
+int stop_while_settling(const PreparedRun<D>& run, const Simulation<D>& sim, const Settling<D>& settling,
+                        const Communicator& world) {
+  const bool first = world.rank() == 0;
+  if (first) std::filesystem::create_directories(run.out);
+  StateWriter after;
+  settling.save_state(after);
+  write_state_checkpoint(run, sim, first ? &after : nullptr, true, world);
   const int signal = interrupted;
+  if (!first) return 128 + signal;
   const std::string msg = fmt::format(
       "interrupted by {} while the water settled, at {:.6g} of its {:.6g} s (step {}); checkpoint written: continue "
       "with slide run --resume {}",
@@ -463,6 +481,12 @@ int stop_while_settling(const PreparedRun<D>& run, const Simulation<D>& sim, con
   write_file_atomically(run.out / "run.json", j.dump(2) + "\n");
   std::cerr << "\nslide: " << msg << "\n";
   return 128 + signal;
+}
+
+// The run's processes: mpirun's, or this one alone.
+const Communicator& world_of(const RunArguments& args) {
+  static const SerialCommunicator alone;
+  return args.world ? *args.world : alone;
 }
 
 // A run on several processes, beside its running simulation: the first process's observers' copy
@@ -533,12 +557,8 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
     std::vector<StepObserver<D>*> observers{&interrupt};
     if (!args.quiet) observers.push_back(&progress);
     try {
-      if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped) {
-        if (!processes) return stop_while_settling(run, sim, settling);
-        Simulation<D>* copy = processes->first() ? processes->copy->simulation.get() : nullptr;
-        ObserverCopy<D>(*processes->world, copy, {}).gather(sim);
-        return copy ? stop_while_settling(run, *copy, settling) : 128 + interrupted;
-      }
+      if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped)
+        return stop_while_settling(run, sim, settling, world_of(args));
       settled = settling.finish();
     } catch (const std::runtime_error& e) {  // it went unstable, or water left the domain
       std::cerr << (args.quiet ? "" : "\n") << refused << e.what() << "\n";
@@ -638,14 +658,21 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     std::error_code no_checkpoint;
     if (!run->resumed_from) std::filesystem::remove(checkpoint_path(out), no_checkpoint);
     outputs.emplace(*scene, whole, out, run->resumed_from.has_value());
-    checkpoints.emplace(*run, *outputs, whole);
     if (resumed_state) {
       try {
         outputs->restore_state(*resumed_state);
-        checkpoints->restore(*resumed_state);
       } catch (const std::runtime_error& e) {
         refusal = e.what();
       }
+    }
+  }
+  // Every process writes the checkpoints together (their particles), the first with its outputs' state.
+  checkpoints.emplace(*run, writes ? &*outputs : nullptr, sim, world_of(args));
+  if (writes && resumed_state && refusal.empty()) {
+    try {
+      checkpoints->restore(*resumed_state);
+    } catch (const std::runtime_error& e) {
+      refusal = e.what();
     }
   }
   std::int64_t refused = refusal.empty() ? 0 : 1;
@@ -664,10 +691,13 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   const auto join_snapshot = [&](const Simulation<D>& s) { shared_snapshot(IdOrdered<D>(s.particles()), 0.0, 0); };
   if (processes) {
     std::vector<typename ObserverCopy<D>::Reader> readers;
-    typename ObserverCopy<D>::Snapshots snapshots{nullptr, nullptr, join_snapshot};
+    typename ObserverCopy<D>::Collective snapshots{nullptr, nullptr, join_snapshot};
+    typename ObserverCopy<D>::Collective checkpoint_hooks{
+        nullptr, nullptr, [&c = *checkpoints](const Simulation<D>&) { c.write(); }};
     if (writes) {
-      readers = {{[&o = *outputs](double t) { return o.samples_due(t); }, &*outputs},
-                 {[&c = *checkpoints](double t) { return c.due(t); }, &*checkpoints}};
+      readers = {{[&o = *outputs](double t) { return o.samples_due(t); }, &*outputs}};
+      checkpoint_hooks.due = [&c = *checkpoints](double t) { return c.due(t); };
+      checkpoint_hooks.write = [&c = *checkpoints](const Simulation<D>& s) { c.write_if_due(s.time()); };
       snapshots.due = [&o = *outputs](double t) { return o.snapshot_due(t); };
       snapshots.write = [&o = *outputs, &whole](const Simulation<D>& s) {
         o.write_snapshot_if_due(whole.particles(), s.time(), s.step_count());
@@ -676,7 +706,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
           [&](double time, long step) { shared_snapshot(IdOrdered<D>(sim.particles()), time, step); });
     }
     processes->observer.emplace(*processes->world, processes->copy ? processes->copy->simulation.get() : nullptr,
-                                std::move(readers), std::move(snapshots));
+                                std::move(readers), std::move(snapshots), std::move(checkpoint_hooks));
   }
   // Where the first process writes a snapshot outside the step loop, the others join it: `first_writes_one` is known
   // on every process.
@@ -789,9 +819,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
 
     if (result.outcome == AdvanceResult::Outcome::stopped) {
       // The checkpoint first: it records the series as a straight run has it, without the final snapshot below.
+      checkpoints->write();
       gather();
       if (writes) {
-        checkpoints->write();
         outputs->write_snapshot(whole.particles(), sim.time(), sim.step_count());
         outputs->flush();
       }
