@@ -773,6 +773,23 @@ double Simulation<D>::fluid_number_density_at(const Vec<D>& point) const {
   return n;
 }
 
+namespace {
+
+// The solves' counts field by field (StateWriter::io and StateReader::io): a struct's padding is not state.
+template <class Stream, class Stats, class Report>
+void viscous_solves_io(Stream& s, Stats& stats, Report& last) {
+  s.io(stats.solves);
+  s.io(stats.iterations);
+  s.io(stats.most_iterations);
+  s.io(stats.largest_residual);
+  s.io(stats.unconverged);
+  s.io(last.iterations);
+  s.io(last.residual);
+  s.io(last.converged);
+}
+
+}  // namespace
+
 template <int D>
 void Simulation<D>::save_state_after_particles(StateWriter& out) const {
   out.put(domain_.particles.body_frames.body);
@@ -784,8 +801,7 @@ void Simulation<D>::save_state_after_particles(StateWriter& out) const {
   out.put(largest_number_density_ratio_);
   out.put(largest_number_density_ratio_time_);
   out.put(rebuilds_);
-  out.put(viscous_solves_);
-  out.put(last_viscous_solve_);
+  viscous_solves_io(out, viscous_solves_, last_viscous_solve_);
   out.put(options.velocity_damping_rate);
   out.put(rheology_suspended_);
   out.put(bodies_ != nullptr);
@@ -804,8 +820,7 @@ void Simulation<D>::restore_state(StateReader& in) {
   in.get(largest_number_density_ratio_);
   in.get(largest_number_density_ratio_time_);
   in.get(rebuilds_);
-  in.get(viscous_solves_);
-  in.get(last_viscous_solve_);
+  viscous_solves_io(in, viscous_solves_, last_viscous_solve_);
   in.get(options.velocity_damping_rate);
   in.get(rheology_suspended_);
   if (in.get<bool>() != (bodies_ != nullptr)) throw std::runtime_error("the checkpoint's bodies are not the scene's");

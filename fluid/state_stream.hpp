@@ -3,6 +3,7 @@
 // its own fields in a fixed order and reads them back in the same order. Values are stored as their bytes (the
 // same machine and build read them), so a restored double is the same double, bit for bit.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -12,11 +13,17 @@
 
 namespace slide {
 
-// Plain values, and fixed-size Eigen vectors of doubles (stored as their coefficients).
+// Numbers, codes, fixed-size Eigen vectors of doubles (stored as their coefficients) and arrays of those. Not structs:
+// their padding bytes are whatever the memory held, so a checkpoint of the same state would not be the same bytes
+// (found when checkpoints from several processes were compared with one process's); a struct lists its fields.
 template <class T>
 concept FixedVector = requires { T::SizeAtCompileTime; typename T::Scalar; } && std::is_same_v<typename T::Scalar, double>;
 template <class T>
-concept StateValue = std::is_trivially_copyable_v<T> || FixedVector<T>;
+struct IsPlainArray : std::false_type {};
+template <class T, std::size_t N>
+struct IsPlainArray<std::array<T, N>> : std::bool_constant<std::is_arithmetic_v<T> || std::is_enum_v<T>> {};
+template <class T>
+concept StateValue = std::is_arithmetic_v<T> || std::is_enum_v<T> || FixedVector<T> || IsPlainArray<T>::value;
 
 class StateWriter {
  public:

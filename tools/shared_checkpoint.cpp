@@ -81,10 +81,10 @@ void write_shared_checkpoint(const Communicator& world, const Simulation<D>& sim
   std::size_t record_bytes = 0;
   bool correction = false;
   {
-    const Records<D> mine = sim.state_records();
+    Records<D> mine = sim.state_records();
     record_bytes = mine.record_bytes;
     correction = mine.correction;
-    held = by_id_range<D>(mine, world);
+    held = world.size() == 1 ? std::move(mine.bytes) : by_id_range<D>(mine, world);  // one process: a copy less
   }
   std::int64_t particles = static_cast<std::int64_t>(held.size() / record_bytes);
   world.sum(&particles, 1);
