@@ -172,7 +172,8 @@ class Simulation {
   // it in the next step).
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
-  // This process's own particles' records, in id order, and their ids.
+  // This process's own particles' records in id order, and their ids: all, or those of [begin, end) of `order`
+  // (owned_in_id_order: a part at a time).
   struct StateRecords {
     std::vector<unsigned char> bytes;
     std::vector<ParticleId> ids;
@@ -180,6 +181,8 @@ class Simulation {
     bool correction = false;
   };
   StateRecords state_records() const;
+  std::vector<std::uint32_t> owned_in_id_order() const;
+  StateRecords state_records(const std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end) const;
   static void put_particle_section_head(StateWriter& out, bool correction, std::uint64_t record_bytes,
                                         std::uint64_t particles);
   // The left particles' part of the section, sorted by time, then id.

@@ -132,7 +132,17 @@ void Simulation<D>::store_as_one_process(bool correction) {
 }
 
 template <int D>
-typename Simulation<D>::StateRecords Simulation<D>::state_records() const {
+std::vector<std::uint32_t> Simulation<D>::owned_in_id_order() const {
+  const auto& P = domain_.particles;
+  std::vector<std::uint32_t> order(P.real_count());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&P](std::uint32_t a, std::uint32_t b) { return P.id[a] < P.id[b]; });
+  return order;
+}
+
+template <int D>
+typename Simulation<D>::StateRecords Simulation<D>::state_records(const std::vector<std::uint32_t>& order,
+                                                                  std::size_t begin, std::size_t end) const {
   const auto& P = domain_.particles;
   StateRecords r;
   r.correction = correction_current_;
@@ -142,16 +152,19 @@ typename Simulation<D>::StateRecords Simulation<D>::state_records() const {
     if (static_cast<const void*>(&v) == static_cast<const void*>(&P.id)) past_id = true;
     if (!past_id) r.id_offset += sizeof(typename std::decay_t<decltype(v)>::value_type);
   });
-  std::vector<std::size_t> by_id(P.real_count());
-  std::iota(by_id.begin(), by_id.end(), std::size_t{0});
-  std::sort(by_id.begin(), by_id.end(), [&P](std::size_t a, std::size_t b) { return P.id[a] < P.id[b]; });
-  r.bytes.reserve(by_id.size() * r.record_bytes);
-  r.ids.reserve(by_id.size());
-  for (const std::size_t i : by_id) {
-    append_state_record(i, r.correction, r.bytes);
-    r.ids.push_back(P.id[i]);
+  r.bytes.reserve((end - begin) * r.record_bytes);
+  r.ids.reserve(end - begin);
+  for (std::size_t k = begin; k < end; ++k) {
+    append_state_record(order[k], r.correction, r.bytes);
+    r.ids.push_back(P.id[order[k]]);
   }
   return r;
+}
+
+template <int D>
+typename Simulation<D>::StateRecords Simulation<D>::state_records() const {
+  const std::vector<std::uint32_t> order = owned_in_id_order();
+  return state_records(order, 0, order.size());
 }
 
 template <int D>

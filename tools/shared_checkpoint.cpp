@@ -72,19 +72,35 @@ std::vector<LeftParticle> left_on_first(const Simulation<D>& sim, const Communic
   return left;
 }
 
-}  // namespace
 
+// One process: its records, in id order, written a part at a time (no copy of the particles).
 template <int D>
-void write_shared_checkpoint(const Communicator& world, const Simulation<D>& sim, CheckpointFile* file,
-                             const StateWriter* rest) {
+void write_records_alone(const Simulation<D>& sim, CheckpointFile& file) {
+  const std::vector<std::uint32_t> order = sim.owned_in_id_order();
+  constexpr std::size_t part = 65536;
+  for (std::size_t begin = 0; begin == 0 || begin < order.size(); begin += part) {
+    const Records<D> r = sim.state_records(order, begin, std::min(begin + part, order.size()));
+    if (begin == 0) {
+      StateWriter head;
+      Simulation<D>::put_particle_section_head(head, r.correction, r.record_bytes, order.size());
+      file.append(head.bytes().data(), head.bytes().size());
+    }
+    file.append(r.bytes.data(), r.bytes.size());
+  }
+}
+
+// Several processes: each process's records to the process of their id's range, then to the first one range at a
+// time.
+template <int D>
+void write_records_shared(const Communicator& world, const Simulation<D>& sim, CheckpointFile* file) {
   std::vector<unsigned char> held;
   std::size_t record_bytes = 0;
   bool correction = false;
   {
-    Records<D> mine = sim.state_records();
+    const Records<D> mine = sim.state_records();
     record_bytes = mine.record_bytes;
     correction = mine.correction;
-    held = world.size() == 1 ? std::move(mine.bytes) : by_id_range<D>(mine, world);  // one process: a copy less
+    held = by_id_range<D>(mine, world);
   }
   std::int64_t particles = static_cast<std::int64_t>(held.size() / record_bytes);
   world.sum(&particles, 1);
@@ -99,6 +115,15 @@ void write_shared_checkpoint(const Communicator& world, const Simulation<D>& sim
     const std::vector<unsigned char> range = gather_bytes_on_first(world, r == world.rank() ? held : none);
     if (file) file->append(range.data(), range.size());
   }
+}
+
+}  // namespace
+
+template <int D>
+void write_shared_checkpoint(const Communicator& world, const Simulation<D>& sim, CheckpointFile* file,
+                             const StateWriter* rest) {
+  if (world.size() == 1) write_records_alone(sim, *file);
+  else write_records_shared(world, sim, file);
   std::vector<LeftParticle> left = left_on_first(sim, world);
   if (!file) return;
   StateWriter tail;
