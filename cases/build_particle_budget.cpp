@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cases/observed_particles.hpp"
 #include "cases/particle_budget.hpp"
 #include "cases/scene_build.hpp"
 #include "fluid/walls.hpp"
@@ -139,13 +140,18 @@ void check_run_memory(SceneBuild<D>& b) {
   in.body_steps = dt > 0.0 ? double(b.scene->bodies.size()) * (settling + b.scene->end_time) / dt : 0.0;
   b.scene->memory_estimate_bytes = program_resident_bytes() + run_memory_bytes(in);
   // Several processes (cases::ForProcesses): this process's share, its part of the build and, on the first, the
-  // observers' copy; each holds its own against its limit (SLIDE_MEMORY_LIMIT is a process's).
+  // observers' copy of the particles the outputs read; each holds its own against its limit (SLIDE_MEMORY_LIMIT is a
+  // process's).
   const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
-  std::int64_t whole[2] = {static_cast<std::int64_t>(sim.particles().real_count()),
-                           static_cast<std::int64_t>(sim.particles().size())};
+  const ObservedParticles<D> observed(*b.scene, sim.domain().ghost_layout(), sim.re() + sim.options.dp);
+  std::int64_t whole[3] = {static_cast<std::int64_t>(sim.particles().real_count()),
+                           static_cast<std::int64_t>(sim.particles().size()), 0};
   if (comm) {
-    comm->sum(whole, 2);  // the particles made, and with their images (and other processes' copies: an upper bound)
-    const ProcessMemoryInputs process{double(whole[0]), double(whole[1]), comm->rank() == 0,
+    for (std::size_t i = 0; i < sim.particles().real_count(); ++i) whole[2] += observed(sim.particles(), i) ? 1 : 0;
+    // the particles made, with their images (and other processes' copies: an upper bound), and those the copy holds
+    comm->sum(whole, 3);
+    const double images = whole[0] > 0 ? double(whole[1]) / double(whole[0]) : 1.0;
+    const ProcessMemoryInputs process{double(whole[0]), images * double(whole[2]), comm->rank() == 0,
                                       b.scene->surge_front.enabled, b.initial_state == InitialState::settled};
     b.scene->memory_estimate_bytes = program_resident_bytes() + process_memory_bytes(in, process);
   }
@@ -174,8 +180,8 @@ void check_run_memory(SceneBuild<D>& b) {
                                  whole[0], b.dp, size_text(need), where_needed(comm, *limit, here),
                                  size_text(have), limit->source + (comm ? "" : shared_by(*limit, here)),
                                  fewer_here(*limit, here),
-                                 comm && comm->rank() == 0 ? " (the first process also holds the whole scene's "
-                                                             "particles for the outputs)"
+                                 comm && comm->rank() == 0 ? " (the first process also holds a copy of the "
+                                                             "particles its outputs read)"
                                                            : ""));
 }
 

@@ -27,7 +27,7 @@ double run_memory_bytes(const RunMemoryInputs& in);
 // What one process of a run on several holds beside its share's run.
 struct ProcessMemoryInputs {
   double made = 0.0;            // the whole scene's particles, which every process makes before it keeps its share
-  double copy_particles = 0.0;  // the observers' copy's, mirror images included (tools/observer_copy.hpp)
+  double copy_particles = 0.0;  // the observers' copy's: the particles the outputs read, with their images
   bool first = false;           // the first process: it holds the copy
   bool copy_lists_neighbours = false;  // the copy lists its neighbours (the surge front reads them)
   bool settles = false;         // a settled start: every process holds every particle's start position by id

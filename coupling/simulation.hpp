@@ -133,6 +133,13 @@ class Simulation {
     observers_copy_ = true;
     copy_lists_ = list;
   }
+  // The copy, once built: its particles dropped and their memory given back until the first adopt_whole_state fills
+  // it (the copy is built whole before the running scene; holding it whole beside the build doubled the first
+  // process's peak). Their id range stays.
+  void drop_copy_particles();
+  // The real particles of the whole run: on one process its own; on an observers' copy, every process's owned
+  // particles at the last adopt_whole_state, of which the copy holds those the outputs read.
+  std::size_t particles_in_run() const { return observers_copy_ ? particles_in_run_ : domain_.particles.real_count(); }
 
   // Computes n0 and lambda from the lattice, builds the neighbour list, and evaluates number density and
   // pressure at the initial positions. With a communicator set (set_communicator), the first re-sort keeps this
@@ -162,7 +169,8 @@ class Simulation {
   // afterwards the particles are stored as one process held them (as adopt_whole_state leaves them) and the next step
   // is the one the saved run would have taken, bit for bit.
   //
-  // The state is its particle section, then the rest (save_state_after_particles). The particle section holds every
+  // The state (written by tools/shared_checkpoint.hpp, on one process or several) is its particle section, then the
+  // rest (save_state_after_particles). The particle section holds every
   // real particle in id order and those that left the domain by time, then id, whichever process held them, so that
   // a checkpoint does not say how many processes wrote it (tools/shared_checkpoint.hpp writes one from every
   // process's own particles):
@@ -170,7 +178,6 @@ class Simulation {
   // A record: every per-particle array's value (fluid/process_halo.hpp), the position the neighbour list was built at,
   // and the corrected gradient's matrix of the last pressure stage where present (the semi-implicit predictor reads
   // it in the next step).
-  void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
   // This process's own particles' records in id order, and their ids: all, or those of [begin, end) of `order`
   // (owned_in_id_order: a part at a time).
@@ -228,7 +235,8 @@ class Simulation {
   // the last re-sort, by id within a cell), so that every output reads the same numbers in the same order as one
   // process's run, the corrected gradient's matrices of the last pressure stage included (a checkpoint holds them);
   // the rigid bodies are the running simulation's own (shared).
-  std::vector<unsigned char> owned_state_bytes() const;
+  // read(i): whether the copy takes owned particle i (cases/observed_particles.hpp); all where it is empty.
+  std::vector<unsigned char> owned_state_bytes(const std::function<bool(std::size_t)>& read = {}) const;
   void adopt_whole_state(int processes, const std::function<std::vector<unsigned char>(int)>& owned_by,
                          const Simulation& running);
 
@@ -256,14 +264,14 @@ class Simulation {
   void check_periodic_setup() const;
   void check_mirror_setup() const;
   void prepare_processes();
-  // A state record (save_state) of particle i, and one read back onto the end of the particles.
+  // A record of the particle section (restore_state) for particle i, and one read back onto the end of the particles.
   void append_state_record(std::size_t i, bool correction, std::vector<unsigned char>& out) const;
   void read_state_record(const unsigned char*& in, bool correction);
   // After the real particles and their build positions (and gradient matrices) were read in any order: stores them
   // as one process holds them at this step (by cell of the positions of the last re-sort, by id within a cell), with
   // their ghosts, neighbour list (unless an observers' copy needs none) and the ghosts' fields.
   void store_as_one_process(bool correction);
-  // The particle section (save_state) read back in id order; returns whether it holds gradient matrices.
+  // The particle section (restore_state) read back in id order; returns whether it holds gradient matrices.
   bool read_particle_section(StateReader& in);
 
   Domain<D> domain_;
@@ -299,6 +307,7 @@ class Simulation {
   WaterSurface<D> water_surface_;  // of the first phase (the water), when pore_water_
   ImplicitViscosity implicit_viscosity_;
   bool observers_copy_ = false, copy_lists_ = false;  // make_observers_copy
+  std::size_t particles_in_run_ = 0;  // an observers' copy's: particles_in_run
   ViscousSolveStats viscous_solves_;
   ViscousSolveReport last_viscous_solve_;
 };

@@ -22,15 +22,20 @@ void Simulation<D>::read_state_record(const unsigned char*& in, bool correction)
 }
 
 template <int D>
-std::vector<unsigned char> Simulation<D>::owned_state_bytes() const {
+std::vector<unsigned char> Simulation<D>::owned_state_bytes(const std::function<bool(std::size_t)>& read) const {
   const auto& P = domain_.particles;
   const std::size_t n = P.real_count();
+  std::vector<std::uint32_t> sent;
+  sent.reserve(read ? 0 : n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!read || read(i)) sent.push_back(static_cast<std::uint32_t>(i));
   std::vector<unsigned char> out;
-  out.reserve(2 * sizeof(std::uint64_t) + n * (ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>)));
+  out.reserve(3 * sizeof(std::uint64_t) + 1 + sent.size() * (ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>)));
   halo_bytes::put<std::uint64_t>(out, n);
+  halo_bytes::put<std::uint64_t>(out, sent.size());
   halo_bytes::put<std::uint64_t>(out, left_the_domain_.size());
   halo_bytes::put<std::uint8_t>(out, correction_current_ ? 1 : 0);
-  for (std::size_t i = 0; i < n; ++i) append_state_record(i, correction_current_, out);
+  for (const std::uint32_t i : sent) append_state_record(i, correction_current_, out);
   for (const LeftParticle& l : left_the_domain_) {
     halo_bytes::put(out, l.id);
     halo_bytes::put(out, l.time);
@@ -57,10 +62,12 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
   domain_.drop_ghosts();
   clear_particles(P, position_at_build_, left_the_domain_);
   bool correction = false;  // the same on every process
+  particles_in_run_ = 0;
   for (int r = 0; r < processes; ++r) {  // one process's particles at a time: no buffer holds the whole scene
     const std::vector<unsigned char> piece = owned_by(r);
     const unsigned char* in = piece.data();
     if (piece.empty()) continue;
+    particles_in_run_ += halo_bytes::get<std::uint64_t>(in);
     const auto n = halo_bytes::get<std::uint64_t>(in), left = halo_bytes::get<std::uint64_t>(in);
     correction = halo_bytes::get<std::uint8_t>(in) != 0;
     for (std::uint64_t k = 0; k < n; ++k) read_state_record(in, correction);
@@ -72,8 +79,8 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
       left_the_domain_.push_back(std::move(l));
     }
   }
-  if (P.real_count() > made) throw std::logic_error("adopt_whole_state: more particles than the scene made");
-  P.removed_count = made - P.real_count();
+  if (particles_in_run_ > made) throw std::logic_error("adopt_whole_state: more particles than the scene made");
+  P.removed_count = made - P.real_count();  // the id range stays the run's
   // One process records them step by step, by id within a step.
   std::sort(left_the_domain_.begin(), left_the_domain_.end(), [](const LeftParticle& a, const LeftParticle& b) {
     return a.time < b.time || (a.time == b.time && a.id < b.id);
@@ -92,6 +99,21 @@ void Simulation<D>::adopt_whole_state(int processes, const std::function<std::ve
   // The bodies are the same on every process (each steps its own copy of the rigid world with the same combined
   // forces): the copy reads the running simulation's.
   if (bodies_ || running.bodies_) bodies_ = running.bodies_;
+}
+
+template <int D>
+void Simulation<D>::drop_copy_particles() {
+  if (!observers_copy_) throw std::logic_error("drop_copy_particles on a running simulation");
+  auto& P = domain_.particles;
+  const std::size_t made = P.id_end();
+  domain_.drop_ghosts();
+  clear_particles(P, position_at_build_, left_the_domain_);
+  P.for_each_array([](auto& v) { v.shrink_to_fit(); });
+  P.gradient_correction.shrink_to_fit();
+  position_at_build_.shrink_to_fit();
+  list_ = NeighborList{};
+  P.removed_count = made;
+  particles_in_run_ = made;
 }
 
 template <int D>
@@ -188,16 +210,7 @@ void Simulation<D>::put_left_particles(StateWriter& out, std::vector<LeftParticl
   }
 }
 
-template <int D>
-void Simulation<D>::save_state(StateWriter& out) const {
-  const StateRecords r = state_records();
-  put_particle_section_head(out, r.correction, r.record_bytes, r.ids.size());
-  out.append(r.bytes.data(), r.bytes.size());
-  put_left_particles(out, left_the_domain_);
-  save_state_after_particles(out);
-}
-
-// The particle section (save_state) read back, the particles in id order; returns whether it holds gradient matrices.
+// The particle section (restore_state) read back in id order; returns whether it holds gradient matrices.
 template <int D>
 bool Simulation<D>::read_particle_section(StateReader& in) {
   auto& P = domain_.particles;
@@ -225,8 +238,10 @@ bool Simulation<D>::read_particle_section(StateReader& in) {
   return correction;
 }
 
-template std::vector<unsigned char> Simulation<2>::owned_state_bytes() const;
-template std::vector<unsigned char> Simulation<3>::owned_state_bytes() const;
+template std::vector<unsigned char> Simulation<2>::owned_state_bytes(const std::function<bool(std::size_t)>&) const;
+template std::vector<unsigned char> Simulation<3>::owned_state_bytes(const std::function<bool(std::size_t)>&) const;
+template void Simulation<2>::drop_copy_particles();
+template void Simulation<3>::drop_copy_particles();
 template void Simulation<2>::adopt_whole_state(int, const std::function<std::vector<unsigned char>(int)>&,
                                                const Simulation<2>&);
 template void Simulation<3>::adopt_whole_state(int, const std::function<std::vector<unsigned char>(int)>&,

@@ -1,16 +1,17 @@
 #pragma once
 // A run on several processes (mpirun) writes what one process's run writes, byte for byte. The first process keeps a
 // second simulation of the scene that never steps, the observers' copy: whenever an output is due, every process sends
-// it its owned particles, one process after another, and the copy takes them in as one process would hold them at
-// that step (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy as they read a
-// one-process run, gauges and fronts alike. The copy lists no neighbours (Simulation::make_observers_copy) unless an
+// it those of its owned particles that the outputs read (cases/observed_particles.hpp: near a gauge, of a slide, all
+// the fluid for the 2-D flume's diagnostics), one process after another, and the copy takes them in as one process
+// would hold them at that step (Simulation::adopt_whole_state); the outputs (tools/run_outputs.hpp) then read the copy
+// as they read a one-process run, gauges and fronts alike. The copy lists no neighbours (Simulation::make_observers_copy) unless an
 // output reads them. Snapshots and checkpoints are the exceptions: every process gives its own particles, and the
 // processes holding a chunk's rows encode it (tools/snapshot_rows.hpp); a checkpoint's particles come to the first
 // process one id range at a time (tools/shared_checkpoint.hpp).
 //
-// The copy's memory and the gathering's time on the first process grow with the whole scene (run.json's
-// partition.observer_copy gives the gathers and their seconds, partition.memory every process's peak; docs/using.md
-// the measured figures): past one machine's memory, observers that reduce across processes take its place (not yet).
+// The copy's memory and the gathering's time on the first process grow with the particles the outputs read, not with
+// the whole scene (run.json's partition.observer_copy gives the gathers, their seconds and the particles the copy held
+// at the last; partition.memory every process's peak; docs/using.md the measured figures).
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -38,10 +39,12 @@ class ObserverCopy : public StepObserver<D> {
     std::function<bool(double)> due;
     std::function<void(const Simulation<D>&)> write, join;
   };
-  ObserverCopy(const Communicator& world, Simulation<D>* copy, std::vector<Reader> readers,
+  // Which of a process's owned particles the copy takes (every process's: cases/observed_particles.hpp).
+  using Observed = std::function<bool(const Particles<D>&, std::size_t)>;
+  ObserverCopy(const Communicator& world, Simulation<D>* copy, Observed observed, std::vector<Reader> readers,
                Collective snapshots = {}, Collective checkpoints = {})
-      : world_(&world), copy_(copy), readers_(std::move(readers)), snapshots_(std::move(snapshots)),
-        checkpoints_(std::move(checkpoints)) {}
+      : world_(&world), copy_(copy), observed_(std::move(observed)), readers_(std::move(readers)),
+        snapshots_(std::move(snapshots)), checkpoints_(std::move(checkpoints)) {}
 
   // Every process: whether any reader reads the copy after this step, and whether a snapshot or a checkpoint is due
   // (the first process knows); the copy is brought up to date only for the readers. The checkpoint comes last, as on
@@ -67,7 +70,8 @@ class ObserverCopy : public StepObserver<D> {
     const auto start = std::chrono::steady_clock::now();
     // One process's particles at a time (a collective each, but the first's own), so that the first process holds
     // no buffer of the whole scene beside the copy.
-    std::vector<unsigned char> mine = sim.owned_state_bytes();
+    std::vector<unsigned char> mine =
+        sim.owned_state_bytes([&](std::size_t i) { return observed_(sim.particles(), i); });
     const std::vector<unsigned char> none;
     const auto owned_by = [&](int r) -> std::vector<unsigned char> {
       if (r == 0) {
@@ -86,10 +90,13 @@ class ObserverCopy : public StepObserver<D> {
   // receiving and taking the particles in): run.json's partition.observer_copy.
   long gathers() const { return gathers_; }
   double seconds() const { return seconds_; }
+  // The particles the copy held after the last gather (real ones, without their images); 0 on the others.
+  std::size_t held() const { return copy_ ? copy_->particles().real_count() : 0; }
 
  private:
   const Communicator* world_;
   Simulation<D>* copy_;
+  Observed observed_;
   std::vector<Reader> readers_;
   Collective snapshots_, checkpoints_;
   long gathers_ = 0;

@@ -17,6 +17,7 @@
 
 #include "cases/check_report.hpp"
 #include "cases/particle_budget.hpp"
+#include "cases/observed_particles.hpp"
 #include "cases/scene.hpp"
 #include "cases/yaml_text.hpp"
 #include "coupling/free_surface_gauge.hpp"
@@ -314,9 +315,11 @@ std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const st
   const auto why = writes ? output_folder_problem(run.out) : std::nullopt;
   if (why) std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
   const bool copy = !why && writes && args.world && args.world->size() > 1;
-  if (copy)
+  if (copy) {
     run.observers_copy =
         build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {nullptr, true, machine});
+    if (run.observers_copy) run.observers_copy->simulation->drop_copy_particles();
+  }
   // The build shares the scene (a collective): every process builds, or none.
   if (refused_anywhere(args, why.has_value() || (copy && !run.observers_copy))) return std::nullopt;
   // Several processes: each keeps and lists its share of the scene (cases::ForProcesses).
@@ -508,9 +511,11 @@ std::optional<ProcessesOfRun<D>> distribute_run(const RunArguments& args, Prepar
   ProcessesOfRun<D> p{args.world.get(), std::move(run.observers_copy), std::nullopt};
   RunArguments scene_args = args;  // a resumed run's scene is the checkpoint's (its files beside it)
   if (scene_args.scene.empty()) scene_args.scene = run.header.scene_file;
-  if (p.first() && !p.copy)
+  if (p.first() && !p.copy) {
     p.copy = build_or_report<D>(scene_args, cases::load_yaml_text(run.header.resolved_scene),
                                 cases::StartOfRun::left_to_caller, {nullptr, true});
+    if (p.copy) p.copy->simulation->drop_copy_particles();
+  }
   if (refused_anywhere(args, p.first() && !p.copy)) return std::nullopt;
   try {
     sim.distribute(args.world);
@@ -596,7 +601,10 @@ json partition_json(const Domain<D>& domain, double imbalance, const std::vector
   }
   return {{"rebalance_imbalance", domain.rebalance_imbalance()}, {"repartitions", domain.repartitions()},
           {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per}, {"memory", memory},
-          {"observer_copy", {{"gathers", copy ? copy->gathers() : 0L}, {"seconds", copy ? copy->seconds() : 0.0}}}};
+          {"observer_copy",
+           {{"gathers", copy ? copy->gathers() : 0L},
+            {"seconds", copy ? copy->seconds() : 0.0},
+            {"particles", copy ? copy->held() : std::size_t{0}}}}};
 }
 
 // The run of a D-dimensional scene: its resolved scene (a new run) or its checkpoint (a resumed one).
@@ -705,8 +713,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
       outputs->write_snapshots_with(
           [&](double time, long step) { shared_snapshot(IdOrdered<D>(sim.particles()), time, step); });
     }
+    const cases::ObservedParticles<D> observed(*scene, sim.domain().ghost_layout(), sim.re() + sim.options.dp);
     processes->observer.emplace(*processes->world, processes->copy ? processes->copy->simulation.get() : nullptr,
-                                std::move(readers), std::move(snapshots), std::move(checkpoint_hooks));
+                                observed, std::move(readers), std::move(snapshots), std::move(checkpoint_hooks));
   }
   // Where the first process writes a snapshot outside the step loop, the others join it: `first_writes_one` is known
   // on every process.
@@ -723,7 +732,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   const long steps_at_loop_start = sim.step_count();
   const double setup_seconds = std::chrono::duration<double>(loop_start - setup_start).count();
   auto loop_rate = [&](double wall) {
-    return wall > 0 ? double(whole.particles().real_count()) * double(sim.step_count() - steps_at_loop_start) / wall
+    return wall > 0 ? double(whole.particles_in_run()) * double(sim.step_count() - steps_at_loop_start) / wall
                     : 0.0;
   };
   auto write_run_json = [&](const std::string& status, const std::string& message, const json& extra) {
@@ -756,7 +765,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     j["processes"] = processes ? processes->world->size() : 1;
     if (processes) j["partition"] = partition_json(sim.domain(), imbalance, owned, costs,
                                                    processes->observer ? &*processes->observer : nullptr);
-    j["particles"] = {{"total", whole.particles().real_count()}, {"fluid", scene->fluid_count},
+    j["particles"] = {{"total", whole.particles_in_run()}, {"fluid", scene->fluid_count},
                       {"wall", scene->wall_count},      {"dummy", scene->dummy_count}};
     j["derived"] = {{"n0", sim.lattice.n0},
                     {"lambda", sim.lattice.lambda},
