@@ -226,16 +226,16 @@ class Simulation {
   // The refusals of distribute, for `processes`, before a run (its settling) starts.
   void check_processes(int processes) const;
 
-  // The first process's whole copy of a run on several processes (tools/observer_copy.hpp). owned_state_bytes: this
-  // process's owned particles (every array, with the position the neighbour list was built at) and the particles it
-  // took out of the run. adopt_whole_state, on a simulation of the same scene on one process: every process's
-  // owned_state_bytes (owned_by(r) gives process r's, for r from 0 to processes - 1, each called once, in order), and
-  // the running simulation's time and counters; afterwards the particles are
-  // stored, given ghosts and a neighbour list as one process would hold them at this step (by cell of the positions of
-  // the last re-sort, by id within a cell), so that every output reads the same numbers in the same order as one
-  // process's run, the corrected gradient's matrices of the last pressure stage included (a checkpoint holds them);
-  // the rigid bodies are the running simulation's own (shared).
-  // read(i): whether the copy takes owned particle i (cases/observed_particles.hpp); all where it is empty.
+  // The first process's copy of a run on several processes (tools/observer_copy.hpp). owned_state_bytes: this
+  // process's owned particles for which read(i) holds (those the outputs read, cases/observed_particles.hpp; all
+  // without read), every array with the position the neighbour list was built at, its count of owned particles, and
+  // the particles it took out of the run. adopt_whole_state, on a simulation of the same scene on one process: every
+  // process's owned_state_bytes (owned_by(r) gives process r's, for r from 0 to processes - 1, each called once, in
+  // order), and the running simulation's time and counters; afterwards the particles are stored, given ghosts and a
+  // neighbour list as one process would hold them at this step (by cell of the positions of the last re-sort, by id
+  // within a cell), so that every output reads the same numbers in the same order as one process's run, the corrected
+  // gradient's matrices of the last pressure stage included; the rigid bodies are the running simulation's own
+  // (shared).
   std::vector<unsigned char> owned_state_bytes(const std::function<bool(std::size_t)>& read = {}) const;
   void adopt_whole_state(int processes, const std::function<std::vector<unsigned char>(int)>& owned_by,
                          const Simulation& running);
