@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -16,20 +17,12 @@ void check(int rc, const char* what) {
   if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
 }
 
-// MPI's counts and offsets are int: one exchange of 2 GiB or more into or out of one process must be split (not yet
-// needed: 2 GiB is over ten million particles on one process's edge). Found on one process only, inside a collective
-// call where the others wait: every process is stopped, with the message.
-int as_count(std::size_t bytes) {
-  if (bytes > std::size_t(INT_MAX)) {
-    std::fprintf(stderr, "slide: error: one exchange between processes of more than 2 GiB (not yet supported)\n");
-    abort_all(1);
-  }
-  return static_cast<int>(bytes);
-}
+// MPI's counts and offsets are int: what one call carries into or out of one process stays below 2 GiB.
+int as_count(std::size_t bytes) { return static_cast<int>(bytes); }
 
 class MpiCommunicator final : public Communicator {
  public:
-  MpiCommunicator() {
+  explicit MpiCommunicator(std::size_t call_bytes = std::size_t(INT_MAX)) : call_bytes_(call_bytes) {
     check(MPI_Comm_rank(MPI_COMM_WORLD, &rank_), "MPI_Comm_rank");
     check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
   }
@@ -52,28 +45,75 @@ class MpiCommunicator final : public Communicator {
     received_bytes.assign(in.begin(), in.end());
     return exchange_known(send, send_bytes, received_bytes);
   }
+  // An exchange goes in rounds, each carrying at most call_bytes_ / p bytes from each process to each, so that one
+  // MPI call's counts and offsets fit in an int (an exchange of over 2 GiB into or out of one process: tens of
+  // millions of particles on a process's edges, or a checkpoint's share). Every process takes part in as many rounds
+  // as the largest pair needs, agreed by one reduction; nearly always one, sent straight from and into the buffers.
   std::vector<unsigned char> exchange_known(const std::vector<unsigned char>& send,
                                             const std::vector<std::size_t>& send_bytes,
                                             const std::vector<std::size_t>& in) const override {
+    const std::size_t p = static_cast<std::size_t>(size_);
+    const std::size_t per_pair = std::max<std::size_t>(1, call_bytes_ / p);
+    std::int64_t rounds = 1;
+    for (std::size_t r = 0; r < p; ++r)
+      rounds = std::max<std::int64_t>(
+          rounds, static_cast<std::int64_t>((std::max(send_bytes[r], in[r]) + per_pair - 1) / per_pair));
+    max(&rounds, 1);
+    std::vector<unsigned char> result(std::accumulate(in.begin(), in.end(), std::size_t{0}));
+    if (rounds == 1) {
+      alltoallv(send.data(), send_bytes, result.data(), in);
+      return result;
+    }
+    std::vector<std::size_t> send_at(p, 0), receive_at(p, 0);  // each process's section in `send` and `result`
+    for (std::size_t r = 1; r < p; ++r) {
+      send_at[r] = send_at[r - 1] + send_bytes[r - 1];
+      receive_at[r] = receive_at[r - 1] + in[r - 1];
+    }
+    std::vector<unsigned char> out_round, in_round;
+    std::vector<std::size_t> out_counts(p), in_counts(p);
+    for (std::int64_t k = 0; k < rounds; ++k) {
+      const std::size_t from = static_cast<std::size_t>(k) * per_pair;  // within each pair's bytes
+      const auto part = [&](std::size_t bytes) { return bytes > from ? std::min(per_pair, bytes - from) : 0; };
+      out_round.clear();
+      for (std::size_t r = 0; r < p; ++r) {
+        out_counts[r] = part(send_bytes[r]);
+        in_counts[r] = part(in[r]);
+        const unsigned char* first = send.data() + send_at[r] + from;
+        out_round.insert(out_round.end(), first, first + out_counts[r]);
+      }
+      in_round.resize(std::accumulate(in_counts.begin(), in_counts.end(), std::size_t{0}));
+      alltoallv(out_round.data(), out_counts, in_round.data(), in_counts);
+      std::size_t at = 0;
+      for (std::size_t r = 0; r < p; ++r) {
+        std::copy_n(in_round.data() + at, in_counts[r], result.data() + receive_at[r] + from);
+        at += in_counts[r];
+      }
+    }
+    return result;
+  }
+
+ private:
+  // One MPI_Alltoallv of counts[r] bytes to and from each process r, each side's bytes in the order of r (their
+  // totals below 2 GiB).
+  void alltoallv(const unsigned char* send, const std::vector<std::size_t>& send_bytes, unsigned char* receive,
+                 const std::vector<std::size_t>& receive_bytes) const {
     const std::size_t p = static_cast<std::size_t>(size_);
     std::vector<int> send_counts(p), send_offsets(p), receive_counts(p), receive_offsets(p);
     std::size_t sent = 0, received = 0;
     for (std::size_t r = 0; r < p; ++r) {
       send_counts[r] = as_count(send_bytes[r]);
       send_offsets[r] = as_count(sent);
-      receive_counts[r] = as_count(in[r]);
+      receive_counts[r] = as_count(receive_bytes[r]);
       receive_offsets[r] = as_count(received);
       sent += send_bytes[r];
-      received += in[r];
+      received += receive_bytes[r];
     }
-    std::vector<unsigned char> result(received);
-    check(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, result.data(),
-                        receive_counts.data(), receive_offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
+    check(MPI_Alltoallv(send, send_counts.data(), send_offsets.data(), MPI_BYTE, receive, receive_counts.data(),
+                        receive_offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
           "MPI_Alltoallv");
-    return result;
   }
 
- private:
+  std::size_t call_bytes_;  // the most one MPI call carries into or out of one process
   int rank_ = 0, size_ = 1;
 };
 
@@ -110,6 +150,10 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 }
 
 MpiSession::~MpiSession() { MPI_Finalize(); }
+
+std::shared_ptr<const Communicator> world_with_calls_of(std::size_t bytes) {
+  return std::make_shared<MpiCommunicator>(std::min(bytes, std::size_t(INT_MAX)));
+}
 
 void abort_all(int code) {
   MPI_Abort(MPI_COMM_WORLD, code);

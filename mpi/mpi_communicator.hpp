@@ -5,9 +5,9 @@
 // A program started by mpirun (or srun) finds its launcher's variables in the environment (launched_by_mpi) and
 // starts MPI (MpiSession); a program started alone does not touch MPI and runs as today's single process. MPI is
 // called only from the thread that started it, outside parallel regions (MPI_THREAD_FUNNELED).
+#include <cstddef>
 #include <memory>
 #include <optional>
-#include <string>
 #include <string>
 
 #include "fluid/communicator.hpp"
@@ -40,6 +40,11 @@ class MpiSession {
  private:
   std::shared_ptr<const Communicator> world_;
 };
+
+// Every process of the run (as MpiSession::world(), MPI started), whose exchanges carry at most `bytes` into or out
+// of one process in one MPI call (MpiSession's: 2 GiB - 1, what MPI's int counts allow), in rounds past it: the tests
+// exchange in rounds of a few bytes.
+std::shared_ptr<const Communicator> world_with_calls_of(std::size_t bytes);
 
 // Stops every process of the run at once with `code` as the run's exit status (one process failed: the others may be
 // waiting for it in a collective call and would wait for ever).

@@ -37,7 +37,8 @@ for pair in 3/2 1/3; do
   same_as "$out/straight" "$run" "stopped on $stop, resumed on $resume"
 done
 # terminate_and_resume LABEL STRAIGHT RUN EXPECTED WAIT SCENE ARGS...: slide run SCENE ARGS on 3 processes into RUN,
-# SIGTERM to mpirun once WAIT (a command) returns, its run.json's message holding EXPECTED and a checkpoint left; then
+# SIGTERM to mpirun once WAIT (a command, given mpirun's process id and RUN) returns, its run.json's message holding
+# EXPECTED and a checkpoint left; then
 # resumed on 2 processes to the files of STRAIGHT (the same run straight on one process).
 terminate_and_resume() {
   local label="$1" straight="$2" run="$3" expected="$4" wait_for="$5" scene="$6"
@@ -45,7 +46,7 @@ terminate_and_resume() {
   "$slide" run "$scene" --out "$straight" --threads 1 --quiet "$@" || exit 1
   "$mpiexec" --oversubscribe -np 3 "$slide" run "$scene" --out "$run" --threads 1 --quiet "$@" &
   local pid=$!
-  $wait_for "$run"
+  $wait_for "$pid" "$run"
   kill -TERM "$pid"
   wait "$pid"
   if ! grep -q "$expected" "$run/run.json" || [ ! -f "$run/checkpoint.bin" ]; then
@@ -61,15 +62,29 @@ terminate_and_resume() {
 # checkpoint resumes, here on 2 processes, to the straight run's files (to 0.6 s; the stop falls where it falls, a
 # second after the run's first outputs).
 running() {
-  for _ in $(seq 1 600); do [ -f "$1/run.json" ] && break; sleep 0.1; done
+  for _ in $(seq 1 600); do [ -f "$2/run.json" ] && break; sleep 0.1; done
   sleep 1
 }
 terminate_and_resume "running" "$out/straight_long" "$out/terminated_on_3_resumed_on_2" '"status": "interrupted"' \
   running "$scene" --set end_time=0.6
-# SIGTERM while the water settles: the gated dam break settles for 2 s before t = 0, shared among the processes (on 3
-# oversubscribed processes on 2 cores, SIGTERM 2 s after the start stopped it at 0.31 s of its settling, measured);
-# the first process's copy writes the checkpoint, which settles on and runs on 2 processes.
-settling() { sleep 2; }
+# SIGTERM while the water settles: the gated dam break settles for 2 s before t = 0, shared among the processes; the
+# checkpoint settles on and runs on 2 processes. SIGTERM goes once every process catches it (its bit in SigCgt of
+# /proc/PID/status: slide takes it from the end of the scene's build, before which it ends a process at once and
+# writes nothing), then half a second more: a fixed 2 s wait ended the build instead with another run beside it on
+# the 2 cores (measured at stop 60).
+settling() {
+  local pid="$1" caught children mask
+  for _ in $(seq 1 600); do
+    children=$(pgrep -P "$pid") caught=0
+    for child in $children; do
+      mask=$(awk '/^SigCgt/ {print $2}' "/proc/$child/status" 2>/dev/null || echo 0)
+      (( 0x${mask:-0} >> 14 & 1 )) && caught=$((caught + 1))
+    done
+    [ -n "$children" ] && [ "$caught" -eq "$(wc -w <<<"$children")" ] && break
+    sleep 0.1
+  done
+  sleep 0.5
+}
 terminate_and_resume "settling" "$out/straight_gated" "$out/terminated_settling_on_3_resumed_on_2" \
   'while the water settled' settling "$(dirname "$0")/../../cases/dam_break_gated_2d.yaml" --set end_time=0.02 \
   --set method.settling_time=2
