@@ -24,8 +24,11 @@ namespace slide::cases {
 //    7 MB fixed (HDF5's library and caches), against 3.5 MB without (the runtime's thread pools and buffers);
 //  * 1 MB more with bodies or slides; 80 B a particle more with a non-Newtonian phase (the semi-implicit viscosity's
 //    solver vectors);
-//  * Bullet's journal: up to 12 doubles a body a step (a force, the step, a damped velocity while settling), and a
-//    vector's doubling: a floating block's peak grew 11 MB over its 2 s of settling and 2 s of run (70,000 steps).
+//  * Bullet's journal: up to 12 doubles a body a step (a force, the step, a damped velocity while settling), twice:
+//    a checkpoint copies it (at an interval, or at SIGTERM, at any time), and before it the vector's doubling held
+//    the old and the new: a floating block's peak grew 11 MB over its 2 s of settling and 2 s of run (70,000 steps).
+//    Since its blocks go back to the system when freed (tools/large_blocks_to_system.hpp), a run that writes no
+//    checkpoint peaks lower: the floating block as shipped at 41.2 MB against 48.3 MB estimated (stop 61).
 // Everything above the program's own is taken 5 % larger: the measured peaks scatter by 3 % about the sum. And 1 MB
 // more for the scatter of small runs, which 5 % of a few MB does not cover: the peak and the program's own at its start
 // each move by 0.2 MB from run to run, so their difference by 0.4 MB. With 0.5 MB here, the dam break at end_time 0.02
@@ -50,7 +53,7 @@ namespace slide::cases {
 // Deflated snapshots (stop 48) hold a dataset's chunk (up to 32,768 rows) in HDF5's chunk cache, the filter's output
 // and the values' copy at once: measured against `none` on the same short runs, +1.1 MB (9,552 particles, 2-D),
 // +1.8 MB (12,800, 2-D), +3.5 MB (38,788, 3-D): taken as 0.5 MB + 120 B a particle up to 32,768.
-double run_memory_bytes(const RunMemoryInputs& in) {
+double first_steps_memory_bytes(const RunMemoryInputs& in) {
   const bool three_d = in.dimension == 3;
   const double per_particle = three_d ? 190.0 + 18.0 * in.listed_per_particle + (in.snapshots ? 150.0 : 0.0)
                                       : 310.0 + 12.0 * in.listed_per_particle + (in.snapshots ? 100.0 : 0.0) +
@@ -60,6 +63,19 @@ double run_memory_bytes(const RunMemoryInputs& in) {
   const double journal = 2.0 * (three_d ? 20.0 : 12.0) * sizeof(double) * in.body_steps;
   return 1.05 * (fixed + in.particles * per_particle + journal);
 }
+
+// Stop 61: the neighbour list's storage keeps its largest size, and the list grows where the water comes to cover
+// walls it did not touch at the start (a wall particle lists the water over it). Measured (run.json's
+// listed_neighbours, the most at any build over the first; whole runs, 1 thread): the 3-D bench at dp 0.02 (water
+// spreading over a floor four times the column's width) +9.2 %; the 3-D dam break (dp 0.005715) +0.6 %; the floating
+// box at dp 0.02 +1.3 %; the Heinrich wedges and the Rzadkiewicz slide (2-D, dp 0.03 and 0.02) +0.3-0.5 %; the 2-D dam
+// breaks none (the column's free surface grows faster than the wetted floor). Taken as 10 % of the list's bytes.
+double list_growth_bytes(const RunMemoryInputs& in) {
+  const double per_neighbour = in.dimension == 3 ? 18.0 : 12.0;
+  return 1.05 * 0.10 * per_neighbour * in.listed_per_particle * in.particles;
+}
+
+double run_memory_bytes(const RunMemoryInputs& in) { return first_steps_memory_bytes(in) + list_growth_bytes(in); }
 
 // Measured at stop 57 (the stage peaks, VmHWM, of 4 processes, oversubscribed, against one without mpirun): the 2-D
 // bench case at dp 0.005 (86,018 particles) and the 3-D bench case (230,180; 322,252 with mirror images), 1 thread:

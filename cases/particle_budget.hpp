@@ -23,6 +23,10 @@ struct RunMemoryInputs {
 // arrays, the neighbour list, and Bullet's journal, which grows by every step (coupling/rigid_bodies.hpp: a
 // checkpoint replays it). Measured against peak_resident_bytes on every shipped case (tests/test_memory_estimate.cpp).
 double run_memory_bytes(const RunMemoryInputs& in);
+// Its two parts: the peak of the run's first steps, and what the neighbour list may grow by over the run (as water
+// covers walls it did not touch at the start), an allowance measured on whole runs (particle_budget.cpp).
+double first_steps_memory_bytes(const RunMemoryInputs& in);
+double list_growth_bytes(const RunMemoryInputs& in);
 
 // What one process of a run on several holds beside its share's run.
 struct ProcessMemoryInputs {

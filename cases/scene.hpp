@@ -148,6 +148,7 @@ struct Scene {
   std::optional<Relaxation> settling;  // the settled start, when used
   double particle_spacing = 0.0;       // m
   double memory_estimate_bytes = 0.0;  // the run's peak resident memory, estimated (cases/particle_budget.hpp)
+  double memory_list_growth_bytes = 0.0;  // the part of it the neighbour list may grow by over the run
   // Built with StartOfRun::left_to_caller: the settling still to run (with initial_state settled) and the gates still
   // to lift; complete_start finishes the start (build_scene does it otherwise).
   std::optional<SettlingPlan<D>> pending_settling;

@@ -237,6 +237,9 @@ void Simulation<D>::update_neighbors(bool force) {
     grid_.follow_reorder();  // the binning of the sorted domain_.particles, known without binning them again
   }
   build_neighbor_list(grid_, x, list_radius(), list_, domain_.particles.real_count());
+  const std::size_t listed = list_.total();
+  if (most_listed_ == 0) listed_at_first_build_ = listed;
+  most_listed_ = std::max(most_listed_, listed);
   pair_weights_.forget();  // of the list before
   position_at_build_ = x;
   ++rebuilds_;

@@ -207,6 +207,10 @@ class Simulation {
   const NeighborList& neighbors() const { return list_; }
   const NeighborGrid<D>& grid() const { return grid_; }
   long neighbor_rebuilds() const { return rebuilds_; }
+  // Neighbours listed (this process's) at the first build and the most at any build since: the list's storage keeps
+  // its largest size, which the memory estimate, taken at the first build, does not know (run.json reports both).
+  std::size_t listed_at_first_build() const { return listed_at_first_build_; }
+  std::size_t most_listed() const { return most_listed_; }
   const ViscousSolveStats& viscous_solves() const { return viscous_solves_; }
   const ViscousSolveReport& last_viscous_solve() const { return last_viscous_solve_; }
   double max_fluid_speed() const;
@@ -297,6 +301,7 @@ class Simulation {
   std::vector<Vec<D>> predictor_acceleration_;  // semi-implicit viscous stage: a - grad p / rho given to the solve
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
+  std::size_t listed_at_first_build_ = 0, most_listed_ = 0;
   // P.gradient_correction holds the matrices of the last pressure stage for the particles in their present order
   // (the corrected gradient; a rebuild, which re-sorts, clears it; a checkpoint keeps both).
   bool correction_current_ = false;

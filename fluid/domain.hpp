@@ -83,6 +83,8 @@ class Domain {
   // Repartition when the largest process's share of the particles exceeds the mean by this factor.
   void set_rebalance_imbalance(double factor) { rebalance_imbalance_ = factor; }
   double rebalance_imbalance() const { return rebalance_imbalance_; }
+  // The imbalance above which redistribute() shares the cells anew: a share may grow to this times the mean.
+  double imbalance_before_rebalance() const { return std::max(rebalance_imbalance_, 1.1 * imbalance_after_partition_); }
   long repartitions() const { return repartitions_; }
   const CommunicationCost& communication_cost() const { return cost_; }
 
@@ -102,7 +104,7 @@ class Domain {
     halo_.migrate(particles, grid, *comm_);
     // Shared anew when the shares differ by more than the factor, and by a tenth more than right after the last
     // partition: a partition of whole cells may not reach the factor, and would otherwise be redone at every re-sort.
-    if (imbalance() > std::max(rebalance_imbalance_, 1.1 * imbalance_after_partition_)) {
+    if (imbalance() > imbalance_before_rebalance()) {
       std::vector<std::int64_t> weights = local_cell_weights(grid);
       comm_->sum(weights.data(), weights.size());
       partition(grid, weights, true);

@@ -1,7 +1,8 @@
 // The run's memory estimate (cases/particle_budget.hpp, issue 30): one figure, printed by `slide check`, recorded in
 // run.json and used by the guard, that bounds the run's measured peak (peak_resident_bytes) from above by at most
 // 15 %. The default set holds it on short runs of small cases with and without a body; the `long` set on every
-// shipped case at two spacings, and on the floating block run as shipped (Bullet's journal grows by every step).
+// shipped case at two spacings, and on whole runs: the floating block as shipped with a checkpoint near its end
+// (Bullet's journal grows by every step), the 3-D bench (its neighbour list grows as the water spreads).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +19,7 @@ namespace fs = std::filesystem;
 
 struct Measured {
   double peak_mb = 0.0, estimate_mb = 0.0, checked_mb = 0.0;
+  double list_growth_mb = 0.0;  // the estimate's allowance for the list's growth over a whole run
 };
 
 // Runs `case_name` with `sets` and reads its peak and estimate; `slide check` with the same sets prints its figure.
@@ -31,20 +33,31 @@ Measured measure(const std::string& case_name, const std::string& sets) {
   Measured m;
   m.peak_mb = j["peak_resident_bytes"].get<double>() / 1e6;
   m.estimate_mb = j["memory_estimate_bytes"].get<double>() / 1e6;
+  m.list_growth_mb = j["memory_estimate_list_growth_bytes"].get<double>() / 1e6;
   const auto c = run_command(slide_binary() + " check " + scene + " " + sets);
   std::smatch found;
   const std::regex memory_line("memory +about ([0-9.]+) MB at its peak");
   if (std::regex_search(c.output, found, memory_line)) m.checked_mb = std::stod(found[1]);
-  std::printf("%s %s: peak %.1f MB, estimate %.1f MB (%+.1f %%), check %.1f MB\n", case_name.c_str(), sets.c_str(),
-              m.peak_mb, m.estimate_mb, 100.0 * (m.estimate_mb / m.peak_mb - 1.0), m.checked_mb);
+  std::printf("%s %s: peak %.1f MB, estimate %.1f MB (%+.1f %%; %.1f MB of it the list's growth), check %.1f MB\n",
+              case_name.c_str(), sets.c_str(), m.peak_mb, m.estimate_mb, 100.0 * (m.estimate_mb / m.peak_mb - 1.0),
+              m.list_growth_mb, m.checked_mb);
   return m;
 }
 
+// A short run: the estimate less its allowance for the list's growth over a whole run bounds the peak of the first
+// steps, within 15 %.
 void expect_bound(const Measured& m) {
-  EXPECT_GE(m.estimate_mb, m.peak_mb);
-  EXPECT_LE(m.estimate_mb, 1.15 * m.peak_mb);
+  EXPECT_GE(m.estimate_mb - m.list_growth_mb, m.peak_mb);
+  EXPECT_LE(m.estimate_mb - m.list_growth_mb, 1.15 * m.peak_mb);
+  EXPECT_GT(m.list_growth_mb, 0.0);
   // The same estimate: it differs only by each process's own footprint at its start (a few hundred kB).
   EXPECT_NEAR(m.checked_mb, m.estimate_mb, 0.5);
+}
+
+// A whole run: the estimate bounds its peak, within 15 %.
+void expect_whole_run_bound(const Measured& m) {
+  EXPECT_GE(m.estimate_mb, m.peak_mb);
+  EXPECT_LE(m.estimate_mb, 1.15 * m.peak_mb);
 }
 
 // The estimate is a total for the process; MemAvailable and a cgroup's headroom are what is free beyond what the
@@ -120,7 +133,18 @@ TEST(LongMemoryEstimate, BoundsThePeakOfEveryShippedCaseAtTwoSpacingsWithin15Per
   }
 }
 
-TEST(LongMemoryEstimate, BoundsThePeakOfTheFloatingBlockAsShipped) { expect_bound(measure("floating_block_2d", "")); }
+// Bullet's journal grows by every step (a vector that doubles), and a checkpoint copies it: the estimate counts twice
+// the journal, for a checkpoint (at an interval, or at SIGTERM) at any time; one is taken here near the end.
+TEST(LongMemoryEstimate, BoundsThePeakOfTheFloatingBlockAsShippedWithACheckpointNearItsEnd) {
+  expect_whole_run_bound(measure("floating_block_2d", "--set output.checkpoint_interval=1.95"));
+}
+
+// Over a whole run the list grows where the water comes to cover walls (particle_budget.cpp, list_growth_bytes): the
+// 3-D bench's water spreads over a floor four times its column's width (its list +9.2 % at this spacing, stop 61).
+// Before glibc's mmap threshold was set (tools/large_blocks_to_system.hpp) this run peaked above its estimate.
+TEST(LongMemoryEstimate, BoundsThePeakOfThe3DBenchRunToItsEnd) {
+  expect_whole_run_bound(measure("dam_break_bench_3d", "--set particle_spacing=0.02"));
+}
 
 }  // namespace
 }  // namespace slide::testing

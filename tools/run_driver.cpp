@@ -589,15 +589,17 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
 // run.json's partition: the rebalance factor, repartitions and final imbalance, each process's owned particles and
 // what its exchanges took (seconds of the step loop refreshing ghosts, re-sorting across processes, reducing; bytes
 // sent), each process's memory (estimated, and its peak so far), and the observers' copy's gathers and their seconds on
-// the first process (costs: 6 per process, in order).
+// the first process (costs: 8 per process, in order).
 template <int D>
 json partition_json(const Domain<D>& domain, double imbalance, const std::vector<std::int64_t>& owned,
                     const std::vector<double>& costs, const ObserverCopy<D>* copy) {
   json per = json::array(), memory = json::array();
-  for (std::size_t r = 0; (r + 1) * 6 <= costs.size(); ++r) {
-    const double* c = &costs[r * 6];
+  for (std::size_t r = 0; (r + 1) * 8 <= costs.size(); ++r) {
+    const double* c = &costs[r * 8];
     per.push_back({{"halo_s", c[0]}, {"rebuild_s", c[1]}, {"reduction_s", c[2]}, {"bytes_sent", c[3]}});
-    memory.push_back({{"memory_estimate_bytes", c[4]}, {"peak_resident_bytes", c[5]}});
+    memory.push_back({{"memory_estimate_bytes", c[4]},
+                      {"peak_resident_bytes", c[5]},
+                      {"listed_neighbours", {{"at_first_build", c[6]}, {"most", c[7]}}}});
   }
   return {{"rebalance_imbalance", domain.rebalance_imbalance()}, {"repartitions", domain.repartitions()},
           {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per}, {"memory", memory},
@@ -744,7 +746,8 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     const std::vector<double> costs =
         collective ? gather_on_first(*processes->world,
                                      {cost.halo_seconds, cost.rebuild_seconds, cost.reduction_seconds, cost.bytes_sent,
-                                      scene->memory_estimate_bytes, peak_resident_bytes()})
+                                      scene->memory_estimate_bytes, peak_resident_bytes(),
+                                      double(sim.listed_at_first_build()), double(sim.most_listed())})
                    : std::vector<double>{};
     if (!writes) return;
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
@@ -781,6 +784,8 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     j["simulated_time"] = sim.time();
     j["steps"] = sim.step_count();
     j["neighbor_rebuilds"] = sim.neighbor_rebuilds();
+    // This process's (on several, each one's is in partition.memory).
+    j["listed_neighbours"] = {{"at_first_build", sim.listed_at_first_build()}, {"most", sim.most_listed()}};
     j["largest_number_density_ratio"] = {{"value", sim.largest_number_density_ratio()},
                                          {"time", sim.largest_number_density_ratio_time()}};
     const ViscousSolveStats& vs = sim.viscous_solves();
@@ -798,6 +803,7 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     j["peak_resident_bytes"] = peak_resident_bytes();
     j["resident_bytes_at_start"] = resident_bytes_at_start;
     j["memory_estimate_bytes"] = scene->memory_estimate_bytes;
+    j["memory_estimate_list_growth_bytes"] = scene->memory_list_growth_bytes;  // its allowance for the list's growth
     j["pair_lanes"] = pair_lanes;
     j["snapshots"] = outputs->snapshot_count();
     j["left_the_domain"] = left_the_domain_json(whole);

@@ -10,6 +10,7 @@
 #include "cases/particle_budget.hpp"
 #include "mpi/mpi_communicator.hpp"
 #include "cases/scene.hpp"
+#include "tools/large_blocks_to_system.hpp"
 #include "tools/report.hpp"
 #include "tools/run_driver.hpp"
 #include "tools/sweep/sweep_command.hpp"
@@ -123,6 +124,7 @@ int run_main(int argc, char** argv, std::shared_ptr<const slide::Communicator> w
 // speaks and writes, and where one process fails alone (exit 1) it stops them all with its code, since the others
 // may be waiting for it.
 int main(int argc, char** argv) {
+  slide::tools::large_blocks_to_system();
   slide::cases::program_resident_bytes();  // the program's own memory, taken before any scene (particle_budget.hpp)
   std::optional<slide::mpi::MpiSession> mpi;
   bool several = false;
