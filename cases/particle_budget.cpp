@@ -45,7 +45,9 @@ namespace slide::cases {
 // explicit) came out 0, and the snapshot's 150 B is more than the 30-80 B a particle that turning snapshots off frees
 // (it carries what the cases with snapshots hold beyond the bench case: mirror images are cheaper than particles, and
 // the bench has the most of them). Stop 48's 350 B + 12 B a neighbour + 230 B with snapshots lay 28 % above the
-// Rzadkiewicz flume's peak.
+// Rzadkiewicz flume's peak. Stop 61: with blocks of 128 kB or more given back when freed
+// (tools/large_blocks_to_system.hpp) the peaks fell 2-6 %, and at 190 B the 3-D dam break at its spacing lay 15.3 %
+// above its peak (the other 3-D runs 6.1-13.3 %): 170 B a particle since, the rest as fitted.
 // Stop 58's snapshot writer (tools/snapshot_writer.cpp: the rows as the file stores them, the chunk shuffled with its
 // padding and zlib's output, its own buffers rather than HDF5's) peaked 0.3 MB (none) and 0.3-0.6 MB (deflate) above
 // stop 57's on the subaerial wedge at dp 0.03 (4,603 particles, 2 runs each, above each run's own start): the fixed
@@ -55,7 +57,7 @@ namespace slide::cases {
 // +1.8 MB (12,800, 2-D), +3.5 MB (38,788, 3-D): taken as 0.5 MB + 120 B a particle up to 32,768.
 double first_steps_memory_bytes(const RunMemoryInputs& in) {
   const bool three_d = in.dimension == 3;
-  const double per_particle = three_d ? 190.0 + 18.0 * in.listed_per_particle + (in.snapshots ? 150.0 : 0.0)
+  const double per_particle = three_d ? 170.0 + 18.0 * in.listed_per_particle + (in.snapshots ? 150.0 : 0.0)
                                       : 310.0 + 12.0 * in.listed_per_particle + (in.snapshots ? 100.0 : 0.0) +
                                             (in.non_newtonian ? 80.0 : 0.0);
   const double deflate = in.snapshots && in.snapshot_deflate ? 0.5e6 + 120.0 * std::min(in.particles, 32768.0) : 0.0;
