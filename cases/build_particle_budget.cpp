@@ -139,7 +139,6 @@ void check_run_memory(SceneBuild<D>& b) {
   const double dt = sim.allowed_time_step().first;
   in.body_steps = dt > 0.0 ? double(b.scene->bodies.size()) * (settling + b.scene->end_time) / dt : 0.0;
   b.scene->memory_estimate_bytes = program_resident_bytes() + run_memory_bytes(in);
-  b.scene->memory_list_growth_bytes = list_growth_bytes(in);
   // Several processes (cases::ForProcesses): this process's share, its part of the build and, on the first, the
   // observers' copy of the particles the outputs read; each holds its own against its limit (SLIDE_MEMORY_LIMIT is a
   // process's).
@@ -162,8 +161,8 @@ void check_run_memory(SceneBuild<D>& b) {
     const ProcessMemoryInputs process{double(whole[0]), images * double(whole[2]), comm->rank() == 0,
                                       b.scene->surge_front.enabled, b.initial_state == InitialState::settled};
     b.scene->memory_estimate_bytes = program_resident_bytes() + process_memory_bytes(in, process);
-    b.scene->memory_list_growth_bytes = list_growth_bytes(in);
   }
+  b.scene->memory_list_growth_bytes = list_growth_bytes(in);  // (of this process's share, as counted above)
   const auto limit = read_memory_limit();
   // A machine's memory (every limit but SLIDE_MEMORY_LIMIT) holds the estimates of the processes on it together, each
   // its own: the first's is the largest (collectives on every process, whatever its limit).
