@@ -381,10 +381,13 @@ void build_slides_and_bodies(SceneBuild<3>& b) {
       if (moved == path) rep.moved_to_draft = rise;
     const auto& pts = shape.points;
     for (const auto& bp : pts) {
-      const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, 0.0);
-      P.wall_normal[i] = bp.normal;
-      P.wall_depth[i] = bp.depth;
-      P.attach_to_body(i, body, bp.position - c, bp.normal);
+      // Every body particle's frame, held here or not (cases/build_share.hpp): the frames are the same everywhere.
+      const std::int32_t frame = b.counting ? -1 : P.add_body_frame(body, bp.position - c, bp.normal);
+      const auto i = b.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, 0.0);
+      if (!i) continue;
+      P.wall_normal[*i] = bp.normal;
+      P.wall_depth[*i] = bp.depth;
+      P.body_frame[*i] = frame;
       b.boundary_owner.push_back(path);
     }
     rep.particles = pts.size();

@@ -196,7 +196,12 @@ void check_overlaps(SceneBuild<D>& b) {
   const Particles<D>& P = b.particles();
   const double dp = b.dp;
   const std::size_t n_boundary = b.boundary_count;
-  NeighborGrid<D> g(b.lo - Vec<D>::Constant(dp), b.hi + Vec<D>::Constant(dp), dp);
+  if (P.size() == 0) return;  // (a part of a scene built in parts may hold none)
+  // Over the particles made here (a scene built in parts, cases/build_share.hpp: its own columns and a margin wider
+  // than 0.75 dp), in the order made: boundary particles first, then fluid by id.
+  Vec<D> lo = P.position[0], hi = P.position[0];
+  for (const auto& x : P.position) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  NeighborGrid<D> g(lo - Vec<D>::Constant(dp), hi + Vec<D>::Constant(dp), dp);
   g.bin(P.position);
   for (std::size_t i = n_boundary; i < P.size(); ++i) {
     const std::string& path = b.fluid_owner[i - n_boundary];

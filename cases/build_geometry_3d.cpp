@@ -30,6 +30,39 @@ std::tuple<long, long, long> lattice_index(const SceneBuild<3>& b, const Vec<3>&
   return {std::lround(q[0] - 0.5), std::lround(q[1] - 0.5), std::lround(q[2] - 0.5)};
 }
 
+// Whether a wall's lattice point is the first at its place: where two tanks meet, or a terrain covers a tank's floor,
+// the earlier wall's point stands. A build in parts (cases/build_share.hpp) holds only some of the points: the
+// counting pass, which meets every one, notes the repeated ones by their number, and the parts skip those.
+class WallPlaces {
+ public:
+  explicit WallPlaces(SceneBuild<3>& b) : b_(b) {}
+  bool first(const Vec<3>& p) {
+    const std::uint64_t number = offered_++;
+    if (b_.counted) return !std::binary_search(b_.counted->repeated_wall_points.begin(),
+                                               b_.counted->repeated_wall_points.end(), number);
+    const bool fresh = placed_.insert(lattice_index(b_, p)).second;
+    if (!fresh && b_.counting) b_.counting->repeated_wall_points.push_back(number);
+    return fresh;
+  }
+
+ private:
+  SceneBuild<3>& b_;
+  std::set<std::tuple<long, long, long>> placed_;
+  std::uint64_t offered_ = 0;
+};
+
+// A wall's or a body's boundary particle at bp, where this process holds it (SceneBuild::add): its index, or none.
+std::optional<std::size_t> add_boundary_point(SceneBuild<3>& b, const BoundaryPointOf<3>& bp, double density,
+                                              double viscosity, const std::string& owner) {
+  const auto i = b.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, density, viscosity);
+  if (!i) return i;
+  Particles<3>& P = b.particles();
+  P.wall_normal[*i] = bp.normal;
+  P.wall_depth[*i] = bp.depth;
+  b.boundary_owner.push_back(owner);
+  return i;
+}
+
 // On the fcc lattice a plane of symmetry must pass through one of the lattice's planes: then its particles are their
 // own images and the images of the planes beside it are the lattice's next planes (A B A). A plane midway between two
 // (B | A) puts A's images where B belongs, a second A 0.794 dp straight across from A: a stacking fault (stop 44,
@@ -124,15 +157,13 @@ double terrain_reach(const SceneBuild<3>& b) {
 // the lattice's points below the surface to the kernel's reach (cases/terrain_layers.hpp). Built after the tanks: a
 // point is kept strictly inside a tank (the tank's own points are its faces and beyond) and on the scene's side of its
 // symmetry planes (the images beyond come from the mirror ghosts), and only where no wall has put one (`placed`).
-void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w,
-                   std::set<std::tuple<long, long, long>>& placed) {
+void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w, WallPlaces& places) {
   typename SceneBuild<3>::Terrain t;
   t.grid = terrain_grid(b, wn, w);
   t.surface = terrain_surface(t.grid);
   t.distance = std::make_shared<const mesh::MeshDistance>(t.surface, false);
   const auto pts = terrain_layers(t.grid, *t.distance, b.sim->options.lattice, b.dp, terrain_reach(b),
                                   b.scene->lattice_offset);
-  Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
   const double eps = 1e-9 * b.dp;
   const auto planes = symmetry_planes(b.r);
@@ -144,14 +175,11 @@ void build_terrain(SceneBuild<3>& b, const YAML::Node& wn, std::size_t w,
               return inside_tank(p, in[0], in[1], eps);
             }));
   };
+  const std::string owner = fmt::format("walls[{}]", w);
   for (const auto& bp : pts) {
     if (!b.in_period(bp.position[0]) || !kept(bp.position)) continue;
-    if (!placed.insert(lattice_index(b, bp.position)).second) continue;
-    const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
-                                first_phase.viscosity);
-    P.wall_normal[i] = bp.normal;
-    P.wall_depth[i] = bp.depth;
-    b.boundary_owner.push_back(fmt::format("walls[{}]", w));
+    if (!places.first(bp.position)) continue;
+    add_boundary_point(b, bp, first_phase.density, first_phase.viscosity, owner);
   }
   b.terrains.push_back(std::move(t));
 }
@@ -187,9 +215,8 @@ void refuse_planes_too_close(const SceneBuild<3>& b) {
 // Boundary particles of the first phase's density, as in 2-D; a point already placed by an earlier wall (where two
 // tanks meet) is left out.
 void build_walls(SceneBuild<3>& b) {
-  Particles<3>& P = b.particles();
   const auto& first_phase = b.phases.phases[0];
-  std::set<std::tuple<long, long, long>> placed;
+  WallPlaces places(b);
   refuse_planes_too_close(b);
   b.scene->lattice_offset = lattice_offset_for_planes(b);
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w) {
@@ -213,18 +240,13 @@ void build_walls(SceneBuild<3>& b) {
       throw SceneError(fmt::format("walls[{}].max", w), e.what());
     }
     std::erase_if(pts, [&](const BoundaryPointOf<3>& p) { return !b.in_period(p.position[0]); });
-    for (const auto& bp : pts) {
-      if (!placed.insert(lattice_index(b, bp.position)).second) continue;
-      const std::size_t i = P.add(bp.position, bp.layer == 0 ? Kind::wall : Kind::dummy, 0, first_phase.density,
-                                  first_phase.viscosity);
-      P.wall_normal[i] = bp.normal;
-      P.wall_depth[i] = bp.depth;
-      b.boundary_owner.push_back(fmt::format("walls[{}]", w));
-    }
+    const std::string owner = fmt::format("walls[{}]", w);
+    for (const auto& bp : pts)
+      if (places.first(bp.position)) add_boundary_point(b, bp, first_phase.density, first_phase.viscosity, owner);
     b.tanks.push_back({lo, hi});
   }
   for (std::size_t w = 0; w < b.r["walls"].size(); ++w)
-    if (b.r["walls"][w]["type"].as<std::string>() == "terrain") build_terrain(b, b.r["walls"][w], w, placed);
+    if (b.r["walls"][w]["type"].as<std::string>() == "terrain") build_terrain(b, b.r["walls"][w], w, places);
 }
 
 // A tank's floor and its sides that are not planes of symmetry, two triangles each, as thick as its particles reach
@@ -300,10 +322,9 @@ struct RegionFill {
   }
 
   // Visits the lattice points of [lo, hi] that the scene's geometry leaves to fluid, adding those `inside` accepts as
-  // phase `ph` owned by `path`; returns how many.
+  // phase `ph` owned by `path`; returns how many (the whole build's, whether this process holds them or not).
   template <class Inside>
   std::size_t fill(const Vec<3>& lo, const Vec<3>& hi, std::size_t ph, const std::string& path, Inside&& inside) {
-    Particles<3>& P = b.particles();
     const auto& phase = b.phases.phases[ph];
     const double eps = 1e-9 * b.dp;
     std::size_t added = 0;
@@ -312,8 +333,8 @@ struct RegionFill {
       if (!b.in_period(p[0]) || !on_modelled_side(planes, p, eps) || !inside(p) || body_near(b, p) >= 0 ||
           !clear_of_terrains(b, p))
         return;
-      P.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity);
-      b.fluid_owner.push_back(path);
+      if (b.add(p, Kind::fluid, static_cast<std::uint8_t>(ph), phase.density, phase.viscosity))
+        b.fluid_owner.push_back(path);
       ++added;
     }, b.scene->lattice_offset);
     return added;
@@ -412,6 +433,12 @@ void fill_fluid_regions(SceneBuild<3>& b) {
     else if (type == "shape") fill.shape(rn, ph, path);
     else fill.below_level(rn, ph, path);
   }
+  if (b.counted) {  // (built in parts: the whole scene's box, as counted)
+    b.lo = b.counted->lo;
+    b.hi = b.counted->hi;
+    return;
+  }
+  if (P.size() == 0) return;  // (the counting pass)
   b.lo = b.hi = P.position[0];
   for (const auto& x : P.position) b.lo = b.lo.cwiseMin(x), b.hi = b.hi.cwiseMax(x);
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "cases/scene_build.hpp"
@@ -48,6 +49,7 @@ void choose_sound_speed(SceneBuild<D>& b) {
   // A lattice column's particles are dp apart on the square lattice, two rows apart on the hexagonal one.
   scene.deepest_water =
       deepest_water<D>(b.particles(), b.dp, b.close_packed ? 2.0 * row_spacing(opt.lattice, b.dp) : b.dp);
+  if (b.processes) b.processes->max(&scene.deepest_water, 1);  // (each process's runs are whole: cases/build_share.hpp)
   const double c0_key = r["method"]["sound_speed"].as<double>();
   if (c0_key > 0.0) {
     opt.sound_speed = c0_key;
@@ -87,7 +89,11 @@ void start_hydrostatic(SceneBuild<D>& b) {
       lower_free_bodies(b, body_shift);
     } else {
       std::vector<double> body_shift;
-      compress_hydrostatically<D>(b.particles(), dp, re, eos, g, true, {}, still_level, &body_shift);
+      std::optional<ColumnShare<D>> columns;
+      if constexpr (D == 3)
+        if (b.share) columns = ColumnShare<D>{[&](const Vec<D>& x) { return b.share->owns(x); }, b.processes};
+      compress_hydrostatically<D>(b.particles(), dp, re, eos, g, true, {}, still_level, &body_shift,
+                                  columns ? &*columns : nullptr);
       lower_free_bodies(b, body_shift);
     }
   } catch (const std::runtime_error& e) {
@@ -146,10 +152,26 @@ void count_particles(Scene<D>& scene) {
 
 template <int D>
 void count_particles(SceneBuild<D>& b) {
-  for (const Kind k : b.particles().kind) {
-    if (k == Kind::fluid) ++b.scene->fluid_count;
-    else if (k == Kind::wall) ++b.scene->wall_count;
-    else ++b.scene->dummy_count;
+  std::int64_t counts[3] = {0, 0, 0};  // fluid, wall, dummy
+  for (const Kind k : b.particles().kind) ++counts[k == Kind::fluid ? 0 : k == Kind::wall ? 1 : 2];
+  if (b.processes) b.processes->sum(counts, 3);  // (a scene built in parts: each its own columns')
+  b.scene->fluid_count = static_cast<std::size_t>(counts[0]);
+  b.scene->wall_count = static_cast<std::size_t>(counts[1]);
+  b.scene->dummy_count = static_cast<std::size_t>(counts[2]);
+}
+
+// A scene built in parts (cases/build_share.hpp): once no step reads across columns, each process keeps its own
+// columns' particles (their storage shrunk to them).
+template <int D>
+void keep_own_columns(SceneBuild<D>& b) {
+  if constexpr (D == 3) {
+    if (!b.share) return;
+    Particles<D>& P = b.particles();
+    P.remove_keeping_ids([&](std::size_t i) { return !b.share->owns(P.position[i]); });
+    P.removed_count = 0;  // the others hold them
+    P.for_each_array([](auto& v) { v.shrink_to_fit(); });
+    b.boundary_count = static_cast<std::size_t>(std::count_if(P.kind.begin(), P.kind.end(),
+                                                              [](Kind k) { return k != Kind::fluid; }));
   }
 }
 
@@ -241,6 +263,7 @@ void settle_now(Scene<D>& scene) {
   template void start_hydrostatic(SceneBuild<D>&);                                \
   template void set_domain(SceneBuild<D>&);                                       \
   template void count_particles(SceneBuild<D>&);                                  \
+  template void keep_own_columns(SceneBuild<D>&);                                 \
   template void plan_settling(SceneBuild<D>&);                                    \
   template void complete_start(Scene<D>&, const std::optional<Relaxation>&);      \
   template void settle_now(Scene<D>&);

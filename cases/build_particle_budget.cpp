@@ -106,16 +106,19 @@ void check_particle_budget(SceneBuild<D>& b) {
     throw SceneError("particle_spacing", fmt::format("the scene would make about {:.3g} particles at dp = {} m, more "
                                                      "than slide can index (2^32 - 1); use a larger particle_spacing",
                                                      n, b.dp));
+  if (b.counting) return;  // (the counting pass makes none: cases/build_share.hpp)
   const auto limit = read_memory_limit();
-  // Several processes on one machine each make the whole scene's particles (cases/scene.cpp): each has its even part
-  // of a machine's memory.
-  const double bytes = program_resident_bytes() + particle_state_bytes(n, D);
+  // Several processes on one machine each make the whole scene's particles (2-D), or their part of it (3-D, counted:
+  // cases/build_share.hpp): each has its even part of a machine's memory.
+  const double made = b.share ? double(b.share->held()) : n;
+  const double bytes = program_resident_bytes() + particle_state_bytes(made, D);
   const int here = b.machine.count();
   if (limit && bytes > limit->even_share_bytes(here))
     throw SceneError("particle_spacing",
-                     fmt::format("the scene would make about {:.3g} particles at dp = {} m, whose arrays alone need "
-                                 "about {}, more than the {} available ({}{}); use a larger particle_spacing{}",
-                                 n, b.dp, size_text(bytes), size_text(limit->even_share_bytes(here)), limit->source,
+                     fmt::format("the scene would make about {:.3g} particles at dp = {} m{}, whose arrays alone "
+                                 "need about {}, more than the {} available ({}{}); use a larger particle_spacing{}",
+                                 made, b.dp, b.share ? " on this process (its part of the scene)" : "",
+                                 size_text(bytes), size_text(limit->even_share_bytes(here)), limit->source,
                                  shared_by(*limit, here), fewer_here(*limit, here)));
 }
 
@@ -158,8 +161,9 @@ void check_run_memory(SceneBuild<D>& b) {
     const double owned = double(sim.particles().real_count());
     const double largest_owned = sim.domain().imbalance_before_rebalance() * double(whole[0]) / comm->size();
     if (owned > 0.0 && largest_owned > owned) in.particles = n * largest_owned / owned;
-    const ProcessMemoryInputs process{double(whole[0]), images * double(whole[2]), comm->rank() == 0,
-                                      b.scene->surge_front.enabled, b.initial_state == InitialState::settled};
+    const ProcessMemoryInputs process{b.share ? double(b.share->held()) : double(whole[0]), double(whole[0]),
+                                      images * double(whole[2]), comm->rank() == 0, b.scene->surge_front.enabled,
+                                      b.initial_state == InitialState::settled};
     b.scene->memory_estimate_bytes = program_resident_bytes() + process_memory_bytes(in, process);
   }
   b.scene->memory_list_growth_bytes = list_growth_bytes(in);  // (of this process's share, as counted above)

@@ -82,7 +82,7 @@ void yield_criterion_at_rest(const SceneBuild<D>& b, const typename SceneBuild<D
   const auto& water = b.phases.phases[0];
   const bool has_water = slide.phase != 0 && std::holds_alternative<Newtonian>(water.rheology);
   WaterSurface<D> surface;
-  if (has_water) surface.build(P, opt.gravity, b.dp, [&](std::size_t i) { return P.phase[i] == 0; });
+  if (has_water) surface.build(P, opt.gravity, b.dp, [&](std::size_t i) { return P.phase[i] == 0; }, b.processes);
   const PorePressureField<D> head{water.density, g, has_water ? &surface : nullptr};
   const bool effective = opt.pore_pressure == PorePressureModel::hydrostatic;
   const double p_top = head.at(top), p_base = head.at(base);
@@ -135,18 +135,20 @@ void finish_slide_report(const SceneBuild<D>& b, const typename SceneBuild<D>::S
                          const std::optional<RestingFace<D>>& face, SlideReportOf<D>& rep) {
   const Particles<D>& P = b.sim->particles();
   // A particle on a plane of symmetry is its own image: half of it lies on the modelled side (one on two planes, a
-  // quarter).
-  double modelled = 0.0;
+  // quarter). Counted in quarters: whole numbers, summed across the processes of a scene built in parts.
+  std::int64_t counts[2] = {0, 0};  // particles, quarters of them modelled
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] != Kind::fluid || P.phase[i] != slide.phase) continue;
-    ++rep.particles;
-    double share = 1.0;
+    ++counts[0];
+    std::int64_t quarters = 4;
     if constexpr (D == 3)
       for (const SymmetryPlane& plane : symmetry_planes(b.r))
-        if (plane.holds(P.position[i], 1e-9 * b.dp)) share *= 0.5;
-    modelled += share;
+        if (plane.holds(P.position[i], 1e-9 * b.dp)) quarters /= 2;
+    counts[1] += quarters;
   }
-  rep.mass_particles = modelled * rep.density * std::pow(b.dp, D);
+  if (b.processes) b.processes->sum(counts, 2);
+  rep.particles = static_cast<std::size_t>(counts[0]);
+  rep.mass_particles = 0.25 * double(counts[1]) * rep.density * std::pow(b.dp, D);
   const double g = b.sim->options.gravity.norm();
   warn_if_rigid_at_rest(b, slide, b.phases.phases[slide.phase].rheology, rep);
   if (g > 0.0 && weight_density(b, slide, rep.density) < 0.0) {

@@ -100,7 +100,7 @@ double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInp
   const bool three_d = share.dimension == 3;
   const double mpi = 8.0e6, build = 350.0 * p.made;
   const double dimension = three_d ? 3.0 : 2.0;
-  const double settling = p.settles ? (16.0 * dimension + 8.0) * p.made : 0.0;
+  const double settling = p.settles ? (16.0 * dimension + 8.0) * p.whole : 0.0;
   const double copy_per_particle = (three_d ? 350.0 : 280.0) +
                                    (p.copy_lists_neighbours ? (three_d ? 18.0 : 12.0) * share.listed_per_particle : 0.0);
   // The copy is a second scene: its fixed parts as a run's (below), without the snapshots' (it writes none).

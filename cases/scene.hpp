@@ -149,6 +149,9 @@ struct Scene {
   double particle_spacing = 0.0;       // m
   double memory_estimate_bytes = 0.0;  // the run's peak resident memory, estimated (cases/particle_budget.hpp)
   double memory_list_growth_bytes = 0.0;  // the part of it the neighbour list may grow by over the run
+  // The particles this process made while building: the whole scene's, or on several processes in 3-D its part of it
+  // (its own columns and their margin, cases/build_share.hpp).
+  std::size_t particles_made_here = 0;
   // Built with StartOfRun::left_to_caller: the settling still to run (with initial_state settled) and the gates still
   // to lift; complete_start finishes the start (build_scene does it otherwise).
   std::optional<SettlingPlan<D>> pending_settling;
@@ -174,10 +177,12 @@ YAML::Node load_scene_text(const std::string& text, const std::vector<std::strin
 // D: the scene's dimension (scene_dimension); a scene of the other dimension is refused naming `dimension`.
 // for_processes: what the simulation serves on several processes (tools/run_driver.cpp; one process: the defaults).
 //   share: this process's communicator, set before the first neighbour list: every process makes the particles of the
-//     whole scene, then keeps and lists only its own (Simulation::initialise), so that none holds the whole scene's
-//     list; a count of processes the neighbour grid cannot share is refused naming `processes`.
-//   observers_copy: the first process's observers' copy (tools/observer_copy.hpp): the whole scene's particles without
-//     a neighbour list (Simulation::make_observers_copy), one only where an output reads neighbours (the surge front).
+//     whole scene (2-D) or of its part of it (3-D: cases/build_share.hpp), then keeps and lists only its own cells'
+//     (Simulation::initialise), so that none holds the whole scene's list; a count of processes the neighbour grid
+//     cannot share is refused naming `processes`.
+//   observers_copy: the first process's observers' copy (tools/observer_copy.hpp): the scene's particles without a
+//     neighbour list (Simulation::make_observers_copy), one only where an output reads neighbours (the surge front).
+//     With a share set (3-D), every process builds its part of the copy (a collective) and the first keeps it.
 enum class StartOfRun { settle_now, left_to_caller, already_settled };
 // What the processes that did not refuse a shared build throw: another said why (tools/run_driver.cpp lets it speak).
 struct RefusedOnAnotherProcess : SceneError {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/build_share.hpp"
 #include "cases/height_grid.hpp"
 #include "cases/initial_state.hpp"
 #include "cases/rheology_keys.hpp"
@@ -56,6 +57,29 @@ struct SceneBuild {
 
   // Set by build_scene on several processes: those on this machine, which share its memory (cases/same_machine.hpp).
   SameMachine machine{{1}};
+  // Set by build_scene on several processes that build a 3-D scene in parts (cases/build_share.hpp): the processes
+  // (the steps that need every particle reduce across them), the counting pass's tally, and this process's part.
+  // The counting pass's own build has `counting` instead: it makes no particle, it counts them.
+  const Communicator* processes = nullptr;
+  std::unique_ptr<const BuildCount> counted;
+  std::optional<BuildShare> share;
+  BuildCount* counting = nullptr;
+  ParticleId made = 0;  // the particles the whole scene has made so far: the next one's id
+  // A particle made as the whole build makes it (its id: its place in that order), kept where this process holds its
+  // position; its index, or none (not held here, or counted only).
+  std::optional<std::size_t> add(const Vec<D>& x, Kind kind, std::uint8_t phase, double density, double viscosity) {
+    const ParticleId id = made++;
+    if constexpr (D == 3) {
+      if (counting) {
+        counting->add(x, dp);
+        return std::nullopt;
+      }
+      if (share && !share->holds(x)) return std::nullopt;
+    }
+    const std::size_t i = particles().add(x, kind, phase, density, viscosity);
+    particles().id[i] = id;
+    return i;
+  }
   // Set by read_fluid_options.
   double dp = 0.0;
   bool close_packed = false;  // hexagonal (2-D) or fcc (3-D): walls cut from the lattice, compressed by settling alone
@@ -165,6 +189,7 @@ void check_fluid_contained(SceneBuild<2>& b);     // check_fluid_contained.cpp
 template <int D> void choose_sound_speed(SceneBuild<D>& b);  // build_initial_state.cpp
 template <int D> void start_hydrostatic(SceneBuild<D>& b);   // build_initial_state.cpp
 template <int D> void set_domain(SceneBuild<D>& b);          // build_initial_state.cpp
+template <int D> void keep_own_columns(SceneBuild<D>& b);    // build_initial_state.cpp: a scene built in parts
 template <int D> void count_particles(SceneBuild<D>& b);     // build_initial_state.cpp
 template <int D> void read_outputs(SceneBuild<D>& b);        // build_outputs.cpp
 void finish_bodies(SceneBuild<2>& b);             // build_bodies.cpp

@@ -81,9 +81,11 @@ class Simulation {
   Particles<D>& particles() { return domain_.particles; }
   const Particles<D>& particles() const { return domain_.particles; }
   const Domain<D>& domain() const { return domain_; }
-  // The processes this run spans (fluid/communicator.hpp), before initialise(): every process then builds the same
-  // scene and keeps its share at the first rebuild. Not called: one process.
-  void set_communicator(std::shared_ptr<const Communicator> comm) { domain_.set_communicator(std::move(comm)); }
+  // The processes this run spans (fluid/communicator.hpp), before initialise(): every process has then built the scene
+  // whole, or (`whole` false) a part of it, and the first rebuild gives each its share. Not called: one process.
+  void set_communicator(std::shared_ptr<const Communicator> comm, bool whole = true) {
+    domain_.set_communicator(std::move(comm), whole);
+  }
   FluidOptions<D> options;
   // The phases particles refer to (Particles::phase). With any non-Newtonian phase, every fluid particle's viscosity
   // is set from its phase's rheology at the start of each step; empty: viscosities stay as the particles were made.
@@ -134,8 +136,8 @@ class Simulation {
     copy_lists_ = list;
   }
   // The copy, once built: its particles dropped and their memory given back until the first adopt_whole_state fills
-  // it (the copy is built whole before the running scene; holding it whole beside the build doubled the first
-  // process's peak). Their id range stays.
+  // it (the copy is built before the running scene, whole in 2-D, its part in 3-D; holding it beside the build doubled
+  // the first process's peak). Their id range (the whole scene's) stays.
   void drop_copy_particles();
   // The real particles of the whole run: on one process its own; on an observers' copy, every process's owned
   // particles at the last adopt_whole_state, of which the copy holds those the outputs read.

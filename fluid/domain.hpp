@@ -70,11 +70,14 @@ class Domain {
 
   std::size_t owned_count() const { return particles.real_count(); }
 
-  // The processes of the run. Before the first rebuild: every process then holds every particle (the scene as built),
-  // and the first rebuild keeps each process's share. Not set, or one process: a run without MPI.
-  void set_communicator(std::shared_ptr<const Communicator> comm) {
+  // The processes of the run, before the first rebuild, which shares the cells out by their particles. `whole`: every
+  // process holds every particle (a scene built whole), and each keeps its cells'; otherwise each holds a part of them
+  // (a 3-D scene built in parts, cases/build_share.hpp), and each particle goes to its cells' process. Not set, or one
+  // process: a run without MPI.
+  void set_communicator(std::shared_ptr<const Communicator> comm, bool whole = true) {
     comm_ = std::move(comm);
-    replicated_ = distributed();
+    replicated_ = distributed() && whole;
+    unpartitioned_ = distributed();
   }
   bool distributed() const { return comm_ && comm_->size() > 1; }
   const Communicator* communicator() const { return comm_.get(); }
@@ -94,10 +97,17 @@ class Domain {
   void redistribute(const NeighborGrid<D>& grid) {
     if (!distributed()) return;
     const Stopwatch watch(cost_.rebuild_seconds);
-    if (replicated_) {
-      partition(grid, local_cell_weights(grid), false);
-      halo_.keep_own(particles, grid, comm_->rank());
-      replicated_ = false;
+    if (unpartitioned_) {
+      std::vector<std::int64_t> weights = local_cell_weights(grid);
+      if (!replicated_) comm_->sum(weights.data(), weights.size());
+      partition(grid, weights, false);
+      if (replicated_) {
+        halo_.keep_own(particles, grid, comm_->rank());
+      } else {
+        halo_.migrate(particles, grid, *comm_);
+        particles.for_each_array([](auto& v) { v.shrink_to_fit(); });  // (grown by what came in)
+      }
+      replicated_ = unpartitioned_ = false;
       imbalance_after_partition_ = imbalance();
       return;
     }
@@ -244,19 +254,9 @@ class Domain {
   void combine(ExactSum* sums, std::size_t count) const {
     if (!distributed()) return;
     const Stopwatch watch(cost_.reduction_seconds);
-    constexpr std::size_t n = ExactSum::digit_count;
-    std::vector<std::int64_t> digits(count * n);
-    for (std::size_t s = 0; s < count; ++s) {
-      const auto& d = sums[s].normalised_digits();
-      std::copy(d.begin(), d.end(), digits.begin() + static_cast<std::ptrdiff_t>(s * n));
-    }
-    comm_->sum(digits.data(), digits.size());
-    for (std::size_t s = 0; s < count; ++s) {
-      std::array<std::int64_t, n> d;
-      std::copy_n(digits.begin() + static_cast<std::ptrdiff_t>(s * n), n, d.begin());
-      sums[s] = ExactSum::from_digits(d);
-    }
+    sum_across(*comm_, sums, count);
   }
+
 
   // A stage's own per-particle array (not one of the particles'), its owned entries carried to the ghosts as a
   // field's are (vectors turned as the image turns them).
@@ -356,6 +356,7 @@ class Domain {
   std::shared_ptr<const Communicator> comm_;
   ProcessHalo<D> halo_;
   bool replicated_ = false;  // every process holds every particle (before the first rebuild)
+  bool unpartitioned_ = false;  // the cells not yet shared out (before the first rebuild)
   int halo_reach_ = 1;
   double rebalance_imbalance_ = DomainOptions{}.rebalance_imbalance;
   double imbalance_after_partition_ = 1.0;

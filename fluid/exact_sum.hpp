@@ -8,11 +8,15 @@
 // The number is held as signed 32-bit digits in 64-bit words: value = sum_k digit[k] 2^(32 k - bias). A term adds to
 // three digits without carrying; carries are pushed up (normalise) before the words could overflow and before reading.
 // Cost, measured in tests/test_exact_sum.cpp's neighbour: a few nanoseconds a term.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <vector>
+
+#include "fluid/communicator.hpp"
 
 namespace slide {
 
@@ -121,5 +125,22 @@ class ExactSum {
   std::array<std::int64_t, digit_count> digit_{};
   int pending_ = 0;  // adds since the last normalise
 };
+
+// Each of the `count` exact sums becomes the sum of every process's: the digits summed as integers, exact whatever the
+// split (collective).
+inline void sum_across(const Communicator& comm, ExactSum* sums, std::size_t count) {
+  constexpr std::size_t n = ExactSum::digit_count;
+  std::vector<std::int64_t> digits(count * n);
+  for (std::size_t s = 0; s < count; ++s) {
+    const auto& d = sums[s].normalised_digits();
+    std::copy(d.begin(), d.end(), digits.begin() + static_cast<std::ptrdiff_t>(s * n));
+  }
+  comm.sum(digits.data(), digits.size());
+  for (std::size_t s = 0; s < count; ++s) {
+    std::array<std::int64_t, n> d;
+    std::copy_n(digits.begin() + static_cast<std::ptrdiff_t>(s * n), n, d.begin());
+    sums[s] = ExactSum::from_digits(d);
+  }
+}
 
 }  // namespace slide

@@ -10,12 +10,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <unordered_map>
 #include <vector>
 
+#include "fluid/communicator.hpp"
 #include "fluid/equation_of_state.hpp"
+#include "fluid/exact_sum.hpp"
 #include "fluid/kernel.hpp"
 #include "fluid/particles.hpp"
 
@@ -68,12 +72,21 @@ double stretch_for_density_ratio(double dp, double re, double target) {
 // capped_surface: the still-water level for runs capped by a body's boundary particles (water under a floating
 // block): their depth counts from that level, not from their own top; NaN for none.
 // Boundary particles of bodies are never shifted: bodies keep the shape they were given.
+// share: several processes, each holding the particles of its own lattice columns and of those within re around
+// them (cases/build_share.hpp): a body's shift is the mean over the runs of every process's own columns. The mean is
+// an exact sum (fluid/exact_sum.hpp) either way, so that it does not depend on how the columns are shared.
+template <int D>
+struct ColumnShare {
+  std::function<bool(const Vec<D>&)> owns;  // whether a run at this horizontal position is this process's
+  const Communicator* processes = nullptr;
+};
 template <int D>
 double compress_hydrostatically(Particles<D>& P, double dp, double re, const EquationOfState& eos, double g,
                                 bool apply, const std::vector<double>& gap_from_top,
                                 double capped_surface = std::numeric_limits<double>::quiet_NaN(),
-                                std::vector<double>* body_shift = nullptr) {
-  std::vector<double> cap_shift_sum, cap_count;  // per body: the top shifts of the runs it caps
+                                std::vector<double>* body_shift = nullptr, const ColumnShare<D>* share = nullptr) {
+  std::vector<ExactSum> cap_shift_sum;  // per body: the top shifts of the runs it caps, and their count
+  std::vector<std::int64_t> cap_count;
   constexpr int up = D - 1;
   struct Run {
     Vec<D> base;                    // horizontal position (vertical component unused)
@@ -180,12 +193,12 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
           run.y_nominal.push_back(y);
           run.shift.push_back(below_new - y);
         }
-        if (cap_body >= 0) {
-          if (cap_shift_sum.size() <= std::size_t(cap_body)) cap_shift_sum.resize(cap_body + 1, 0.0), cap_count.resize(cap_body + 1, 0.0);
+        if (cap_body >= 0 && (!share || share->owns(run.base))) {
+          if (cap_shift_sum.size() <= std::size_t(cap_body)) cap_shift_sum.resize(cap_body + 1), cap_count.resize(cap_body + 1, 0);
           // The body sits on the top particle at the gap the missing water row above it would have.
           const double cap_gap = top_offset >= 1 && top_offset - 1 < gap_from_top.size() ? gap_from_top[top_offset - 1] : dp;
-          cap_shift_sum[cap_body] += run.shift.back() + (cap_gap - dp);
-          cap_count[cap_body] += 1.0;
+          cap_shift_sum[cap_body].add(run.shift.back() + (cap_gap - dp));
+          cap_count[cap_body] += 1;
         }
         runs.push_back(std::move(run));
       }
@@ -194,10 +207,17 @@ double compress_hydrostatically(Particles<D>& P, double dp, double re, const Equ
   }
   if (!apply) return deepest;
   // A body resting on compressed water goes down with it: by the mean top shift of the runs it caps.
+  if (share && share->processes) {  // (every process as many bodies as the most capped)
+    std::int64_t bodies = static_cast<std::int64_t>(cap_count.size());
+    share->processes->max(&bodies, 1);
+    cap_shift_sum.resize(static_cast<std::size_t>(bodies)), cap_count.resize(static_cast<std::size_t>(bodies), 0);
+    sum_across(*share->processes, cap_shift_sum.data(), cap_shift_sum.size());
+    share->processes->sum(cap_count.data(), cap_count.size());
+  }
   if (body_shift) {
     body_shift->assign(cap_count.size(), 0.0);
     for (std::size_t b = 0; b < cap_count.size(); ++b)
-      if (cap_count[b] > 0) (*body_shift)[b] = cap_shift_sum[b] / cap_count[b];
+      if (cap_count[b] > 0) (*body_shift)[b] = cap_shift_sum[b].value() / double(cap_count[b]);
   }
   // Boundary particles: the shift of the horizontally nearest run that spans their height (within re
   // horizontally); above a run's top they take its top shift. One in a run's own column below its bottom (the floor,

@@ -66,10 +66,16 @@ struct Particles {
   // The body particle i belongs to, or -1.
   int body_of(std::size_t i) const { return body_frame[i] < 0 ? -1 : body_frames.body[body_frame[i]]; }
   void attach_to_body(std::size_t i, int b, const Vec<D>& offset, const Vec<D>& normal) {
-    body_frame[i] = static_cast<std::int32_t>(body_frames.body.size());
+    body_frame[i] = add_body_frame(b, offset, normal);
+  }
+  // A frame alone, for a body particle that another process holds: every process keeps every body particle's frame,
+  // in the order they were made, so that an entry's index (body_frame, which travels with the particle) is the same
+  // on all of them.
+  std::int32_t add_body_frame(int b, const Vec<D>& offset, const Vec<D>& normal) {
     body_frames.body.push_back(b);
     body_frames.offset.push_back(offset);
     body_frames.normal.push_back(normal);
+    return static_cast<std::int32_t>(body_frames.body.size() - 1);
   }
 
   // Ghosts (fluid/ghosts.hpp: periodic and mirror images; fluid/process_halo.hpp: other processes' particles). The

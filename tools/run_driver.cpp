@@ -314,14 +314,25 @@ std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const st
   const bool writes = !args.world || args.world->rank() == 0;  // the others write nothing (tools/observer_copy.hpp)
   const auto why = writes ? output_folder_problem(run.out) : std::nullopt;
   if (why) std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
-  const bool copy = !why && writes && args.world && args.world->size() > 1;
-  if (copy) {
-    run.observers_copy =
-        build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {nullptr, true, machine});
+  const bool several = args.world && args.world->size() > 1;
+  if (several && D == 3) {
+    // A 3-D scene is built in parts, the copy's too (a collective: cases/build_share.hpp), which only the first keeps:
+    // no process makes the whole scene.
+    if (refused_anywhere(args, why.has_value())) return std::nullopt;
+    auto copy = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {args.world, true, machine});
+    if (refused_anywhere(args, !copy)) return std::nullopt;
+    if (writes) run.observers_copy = std::move(copy);
     if (run.observers_copy) run.observers_copy->simulation->drop_copy_particles();
+  } else {
+    const bool copy = !why && writes && several;
+    if (copy) {
+      run.observers_copy =
+          build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {nullptr, true, machine});
+      if (run.observers_copy) run.observers_copy->simulation->drop_copy_particles();
+    }
+    // The build shares the scene (a collective): every process builds, or none.
+    if (refused_anywhere(args, why.has_value() || (copy && !run.observers_copy))) return std::nullopt;
   }
-  // The build shares the scene (a collective): every process builds, or none.
-  if (refused_anywhere(args, why.has_value() || (copy && !run.observers_copy))) return std::nullopt;
   // Several processes: each keeps and lists its share of the scene (cases::ForProcesses).
   run.scene = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {args.world, false, machine});
   if (!run.scene) return std::nullopt;
@@ -588,18 +599,19 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
 
 // run.json's partition: the rebalance factor, repartitions and final imbalance, each process's owned particles and
 // what its exchanges took (seconds of the step loop refreshing ghosts, re-sorting across processes, reducing; bytes
-// sent), each process's memory (estimated, and its peak so far), and the observers' copy's gathers and their seconds on
-// the first process (costs: 8 per process, in order).
+// sent), each process's memory (estimated, its peak so far, its neighbour list's size, the particles it made while
+// building), and the observers' copy's gathers and their seconds on the first process (costs: 9 per process, in order).
 template <int D>
 json partition_json(const Domain<D>& domain, double imbalance, const std::vector<std::int64_t>& owned,
                     const std::vector<double>& costs, const ObserverCopy<D>* copy) {
   json per = json::array(), memory = json::array();
-  for (std::size_t r = 0; (r + 1) * 8 <= costs.size(); ++r) {
-    const double* c = &costs[r * 8];
+  for (std::size_t r = 0; (r + 1) * 9 <= costs.size(); ++r) {
+    const double* c = &costs[r * 9];
     per.push_back({{"halo_s", c[0]}, {"rebuild_s", c[1]}, {"reduction_s", c[2]}, {"bytes_sent", c[3]}});
     memory.push_back({{"memory_estimate_bytes", c[4]},
                       {"peak_resident_bytes", c[5]},
-                      {"listed_neighbours", {{"at_first_build", c[6]}, {"most", c[7]}}}});
+                      {"listed_neighbours", {{"at_first_build", c[6]}, {"most", c[7]}}},
+                      {"particles_made_at_build", c[8]}});
   }
   return {{"rebalance_imbalance", domain.rebalance_imbalance()}, {"repartitions", domain.repartitions()},
           {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per}, {"memory", memory},
@@ -747,7 +759,8 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
         collective ? gather_on_first(*processes->world,
                                      {cost.halo_seconds, cost.rebuild_seconds, cost.reduction_seconds, cost.bytes_sent,
                                       scene->memory_estimate_bytes, peak_resident_bytes(),
-                                      double(sim.listed_at_first_build()), double(sim.most_listed())})
+                                      double(sim.listed_at_first_build()), double(sim.most_listed()),
+                                      double(scene->particles_made_here)})
                    : std::vector<double>{};
     if (!writes) return;
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();
