@@ -30,7 +30,7 @@ double list_growth_bytes(const RunMemoryInputs& in);
 
 // What one process of a run on several holds beside its share's run.
 struct ProcessMemoryInputs {
-  double made = 0.0;            // the particles this process made: the whole scene's (2-D), its part's (3-D)
+  double made = 0.0;            // the particles counted as made by this process (check_run_memory: the whole scene's)
   double whole = 0.0;           // the whole scene's particles
   double copy_particles = 0.0;  // the observers' copy's: the particles the outputs read, with their images
   bool first = false;           // the first process: it holds the copy
