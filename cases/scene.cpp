@@ -109,9 +109,13 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
   // collective: a refusal before it on one process alone (a file it cannot read, its memory, an overlap in its part)
   // is agreed first, and the others stop with it.
   std::optional<SceneError> refused;
+  bool refused_elsewhere = false;  // (a part's refusal, agreed within make_particles: the refusing process says why)
   b.machine = for_processes.machine;
   try {
     make_particles(b);
+  } catch (const RefusedOnAnotherProcess&) {
+    if (!shared) throw;
+    refused_elsewhere = true;
   } catch (const SceneError& e) {
     if (!shared) throw;
     refused = e;
@@ -120,7 +124,8 @@ std::unique_ptr<Scene<D>> build_scene(const YAML::Node& r, const std::string& de
     std::int64_t anywhere = refused ? 1 : 0;
     share->max(&anywhere, 1);
     if (refused) throw *refused;
-    if (anywhere != 0) throw RefusedOnAnotherProcess("processes", "another process refused the scene");
+    if (anywhere != 0 || refused_elsewhere)
+      throw RefusedOnAnotherProcess("processes", "another process refused the scene");
     // (The observers' copy, built in parts like the run, stays one process's: its particles come from the run.)
     if (!for_processes.observers_copy) b.sim->set_communicator(share, !b.share);
   }

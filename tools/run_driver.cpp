@@ -83,8 +83,9 @@ bool refused_anywhere(const RunArguments& args, bool refused_here) {
   if (refused_here && world.rank() > 0 && refused[0] == 0) {
     const std::string said = held_stderr.str();
     speak_up();
-    std::cerr << "slide: process " << world.rank() << " of " << world.size() << " (alone: its files or environment "
-              << "are not the first's; is the folder shared by every process?): "
+    std::cerr << "slide: process " << world.rank() << " of " << world.size() << " (alone: in its part of a 3-D "
+              << "scene, or where its files or environment are not the first's: is the folder shared by every "
+              << "process?): "
               << (said.rfind("slide: ", 0) == 0 ? said.substr(7) : said);
     keep_quiet();
   }

@@ -53,6 +53,15 @@ timeout 120 "$mpiexec" --oversubscribe -np 1 "$slide" run "$cases/dam_break_2d.y
   --threads 1 --quiet --set end_time=0.01 : -np 1 -x SLIDE_MEMORY_LIMIT=1k "$slide" run "$cases/dam_break_2d.yaml" \
   --out "$out/refused_by_one" --threads 1 --quiet --set end_time=0.01 >"$out/refused_by_one.log" 2>&1
 expect_refusal $? refused_by_one "process 1 of 2 .*particle_spacing: .*SLIDE_MEMORY_LIMIT"
+# A 3-D scene is built in parts (cases/build_share.hpp): an overlap in the part of a process other than the first
+# (two water boxes at the tank's far end) stops every process before the next step that reduces across them, and the
+# processes that found it say why; exit 2, nothing written.
+box='{type: box, min: [0.4, 0, 0], max: [0.45, 0.017145, 0.05]}'
+timeout 120 "$mpiexec" --oversubscribe -np 3 "$slide" run "$cases/dam_break_3d.yaml" --out "$out/overlap_in_a_part" \
+  --threads 1 --quiet --set particle_spacing=0.005715 \
+  --set "fluid.regions=[{type: box, min: [0, 0, 0], max: [0.05715, 0.017145, 0.1143]}, $box, $box]" \
+  >"$out/overlap_in_a_part.log" 2>&1
+expect_refusal $? overlap_in_a_part "process [12] of 3 .*fluid.regions\[2\]: overlaps fluid.regions\[1\]"
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
