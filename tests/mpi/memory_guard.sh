@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # memory_guard.sh SLIDE MPIEXEC OUT_DIR: the memory guard holds each process's share of a run against its limit
 # (SLIDE_MEMORY_LIMIT is a process's). The 3-D bench case: every process's estimate on four lies above its peak and
-# below one process's estimate; at a limit between them the scene is refused on one process (exit 2, naming
-# particle_spacing, nothing written) and runs on four, every process's peak below the limit. A machine's memory
+# below one process's estimate, and each made only its part of the scene; at a limit between them the scene is
+# refused on one process (exit 2, naming particle_spacing, nothing written) and runs on four, every process's peak
+# below the limit. A machine's memory
 # (SLIDE_MACHINE_MEMORY, as MemAvailable) is shared by the processes on it: at a limit between one process's estimate
 # and the four's together, one process runs and four on this machine are refused.
 set -uo pipefail
@@ -30,6 +31,13 @@ for r, m in enumerate(four):
 print(f"one process: estimate {e1 / 1e6:.1f} MB, peak {one['peak_resident_bytes'] / 1e6:.1f} MB", file=sys.stderr)
 if not largest < e1:
     sys.exit(f"the largest estimate on four, {largest / 1e6:.1f} MB, is not below one process's, {e1 / 1e6:.1f} MB")
+# Built in parts (cases/build_share.hpp): each process made fewer than half the scene's particles (its slab and a
+# margin), and together at least all of them.
+total = one["particles"]["total"]
+made = [m["particles_made_at_build"] for m in four]
+print(f"particles made at the build: {', '.join(f'{m:.0f}' for m in made)} of {total}", file=sys.stderr)
+if not (max(made) < total / 2 and sum(made) >= total):
+    sys.exit("the processes did not each make their part of the scene")
 for r, m in enumerate(four):
     if not m["peak_resident_bytes"] < m["memory_estimate_bytes"]:
         sys.exit(f"process {r}'s peak is above its estimate")
