@@ -138,26 +138,30 @@ void set_domain(SceneBuild<D>& b) {
   b.sim->wall_crossing = WallCrossing<D>(crossing_faces(b), opt.domain_lo, opt.domain_hi, re);
 }
 
-// The kinds of a scene's particles counted (again after gates are lifted), on several processes over all of them.
+namespace {
+// The kinds of a scene's particles counted (again after gates are lifted): on several processes, or by the parts of a
+// scene built in parts (cases/build_share.hpp), each its own particles', summed over all of them.
 template <int D>
-void count_particles(Scene<D>& scene) {
-  const Particles<D>& P = scene.simulation->particles();
+void count_kinds(Scene<D>& scene, const Particles<D>& P, const Communicator* processes) {
   std::int64_t counts[3] = {0, 0, 0};  // fluid, wall, dummy
-  for (std::size_t i = 0; i < P.real_count(); ++i) ++counts[P.kind[i] == Kind::fluid ? 0 : P.kind[i] == Kind::wall ? 1 : 2];
-  if (scene.simulation->domain().distributed()) scene.simulation->domain().communicator()->sum(counts, 3);
+  for (std::size_t i = 0; i < P.real_count(); ++i)
+    ++counts[P.kind[i] == Kind::fluid ? 0 : P.kind[i] == Kind::wall ? 1 : 2];
+  if (processes) processes->sum(counts, 3);
   scene.fluid_count = static_cast<std::size_t>(counts[0]);
   scene.wall_count = static_cast<std::size_t>(counts[1]);
   scene.dummy_count = static_cast<std::size_t>(counts[2]);
 }
+}  // namespace
+
+template <int D>
+void count_particles(Scene<D>& scene) {
+  const Domain<D>& domain = scene.simulation->domain();
+  count_kinds(scene, scene.simulation->particles(), domain.distributed() ? domain.communicator() : nullptr);
+}
 
 template <int D>
 void count_particles(SceneBuild<D>& b) {
-  std::int64_t counts[3] = {0, 0, 0};  // fluid, wall, dummy
-  for (const Kind k : b.particles().kind) ++counts[k == Kind::fluid ? 0 : k == Kind::wall ? 1 : 2];
-  if (b.processes) b.processes->sum(counts, 3);  // (a scene built in parts: each its own columns')
-  b.scene->fluid_count = static_cast<std::size_t>(counts[0]);
-  b.scene->wall_count = static_cast<std::size_t>(counts[1]);
-  b.scene->dummy_count = static_cast<std::size_t>(counts[2]);
+  count_kinds(*b.scene, b.particles(), b.processes);
 }
 
 // A scene built in parts (cases/build_share.hpp): once no step reads across columns, each process keeps its own

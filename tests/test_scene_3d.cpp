@@ -51,6 +51,26 @@ TEST(Scene3D, CubicTankBuildsItsWaterAndWallsAsCountedByHand) {
   EXPECT_EQ(scene->resolved["lattice"].as<std::string>(), "square");
 }
 
+// Two tanks one wall apart, [0, 0.1] and [0.13, 0.23] along x: the first's wall at x max and the second's at x min are
+// one wall, x in [0.1, 0.13], 3 columns, where the second tank's points are the first's (cases/build_geometry_3d.cpp
+// WallPlaces): 3 x 16 x (3 + 20), 1,104, made once. Each tank alone makes 3,888.
+TEST(Scene3D, TanksThatMeetMakeEachWallPointOnce) {
+  const std::string two_tanks = "walls: [{type: tank, min: [0, 0, 0], max: [0.1, 0.1, 0.2]},\n"
+                                "        {type: tank, min: [0.13, 0, 0], max: [0.23, 0.1, 0.2]}]\n";
+  std::string text = tank_scene("square");
+  text.replace(text.find("walls:"), text.find("gauges:") - text.find("walls:"), two_tanks);
+  const auto scene = build_scene<3>(load_scene_text(text, {}), "s");
+  EXPECT_EQ(scene->wall_count + scene->dummy_count, std::size_t(2 * 3888 - 1104));
+  EXPECT_EQ(scene->fluid_count, 2000u);
+  const auto& P = scene->simulation->particles();
+  std::set<std::tuple<long, long, long>> places;
+  for (std::size_t i = 0; i < P.real_count(); ++i) {
+    const Vec<3> q = P.position[i] / 0.01;
+    EXPECT_TRUE(places.insert({std::lround(q[0] - 0.5), std::lround(q[1] - 0.5), std::lround(q[2] - 0.5)}).second)
+        << "two particles at " << P.position[i].transpose();
+  }
+}
+
 // The fcc lattice: the points s (i + 1/2, j + 1/2, k + 1/2), s = 0.7937 dp, i + j + k even, strictly inside the tank
 // and below the level: i, j, k from 0 to 12 (12.5 s = 0.0992 m), half of the 13^3 (the even ones: (13^3 + 1) / 2).
 TEST(Scene3D, FccTankHoldsTheLatticePointsInsideIt) {
