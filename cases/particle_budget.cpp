@@ -92,15 +92,18 @@ double run_memory_bytes(const RunMemoryInputs& in) { return first_steps_memory_b
 // Summed, not the largest of the three: the share's run is taken on top of the build's memory, which the allocator
 // keeps, only partly reused. The sum lies above every measured peak: 4 processes of the 3-D bench, estimated
 // 184 MB (the others) and 291 MB (the first) against peaks of 126-130 MB and 235-240 MB.
-// The settled start (coupling/relaxation.cpp, positions_by_id): every process gathers every particle's id and position
-// (8 + 8 D bytes) and keeps the positions by id (8 D bytes), counted, not measured. The copy's neighbour list: the
+// The settled start (coupling/start_positions.hpp): each process keeps its own particles' ids and start positions
+// (8 + 8 D bytes a particle of its share, ghosts included: an upper bound), and where particles move between processes
+// every process holds the ids of those that moved, twice (its asks to every process, all processes' asks: 16 bytes a
+// particle of the whole scene, after a scene built in parts, where most move at the first re-sort). Counted, not
+// measured. (Until stop 63 every process gathered every particle's id and position and kept the positions by id.) The copy's neighbour list: the
 // share's run's 18 (3-D) and 12 (2-D) B a listed neighbour (run_memory_bytes). Its fixed parts, found missing at stop
 // 58: the gated dam break (1,355 particles) peaked at 33.2 MB on the first of 4 processes against 32.1 MB estimated.
 double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInputs& p) {
   const bool three_d = share.dimension == 3;
   const double mpi = 8.0e6, build = 350.0 * p.made;
   const double dimension = three_d ? 3.0 : 2.0;
-  const double settling = p.settles ? (16.0 * dimension + 8.0) * p.whole : 0.0;
+  const double settling = p.settles ? (8.0 * dimension + 8.0) * share.particles + 16.0 * p.whole : 0.0;
   const double copy_per_particle = (three_d ? 350.0 : 280.0) +
                                    (p.copy_lists_neighbours ? (three_d ? 18.0 : 12.0) * share.listed_per_particle : 0.0);
   // The copy is a second scene: its fixed parts as a run's (below), without the snapshots' (it writes none).

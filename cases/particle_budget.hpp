@@ -35,7 +35,7 @@ struct ProcessMemoryInputs {
   double copy_particles = 0.0;  // the observers' copy's: the particles the outputs read, with their images
   bool first = false;           // the first process: it holds the copy
   bool copy_lists_neighbours = false;  // the copy lists its neighbours (the surge front reads them)
-  bool settles = false;         // a settled start: every process holds every particle's start position by id
+  bool settles = false;         // a settled start: its start positions (coupling/start_positions.hpp)
 };
 
 // One process of a run on several (cases::ForProcesses), above the program's own, bytes: an upper bound, the sum of

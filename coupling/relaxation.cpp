@@ -33,17 +33,21 @@ namespace {
 template <int D>
 class Settling<D>::Observer : public StepObserver<D> {
  public:
-  Observer(Relaxation& out, RigidBodies<D>* floating, const std::vector<Vec<D>>& start,
-           const std::vector<HeldPhase<D>>& held)
+  Observer(Relaxation& out, RigidBodies<D>* floating, StartPositions<D>& start, const std::vector<HeldPhase<D>>& held)
       : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(start) {
     for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
     holds_ = !held.empty();  // the same on every process: the scene's plan
   }
   void after_step(Simulation<D>& sim, double dt) override {
     auto& P = sim.particles();
+    // Particles change process only where the particles are re-sorted (the same steps on every process).
+    if (holds_ && sim.neighbor_rebuilds() != rebuilds_followed_) {
+      start_.follow(P, sim.domain().distributed() ? sim.domain().communicator() : nullptr);
+      rebuilds_followed_ = sim.neighbor_rebuilds();
+    }
     for (std::size_t i = 0; i < P.real_count(); ++i)
       if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
-        const Vec<D>& x0 = start_[P.id[i]];
+        const Vec<D>& x0 = start_.of(P.id[i]);
         const Vec<D>& free = free_[P.phase[i]];
         P.position[i] = x0 + (P.position[i] - x0).dot(free) * free;
         P.velocity[i] = P.velocity[i].dot(free) * free;
@@ -61,43 +65,17 @@ class Settling<D>::Observer : public StepObserver<D> {
   std::vector<bool> held_;
   bool holds_ = false;
   std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
-  const std::vector<Vec<D>>& start_;  // by id (Settling's)
+  StartPositions<D>& start_;  // Settling's
+  long rebuilds_followed_ = -1;
 };
 
-namespace {
-// Every real particle's position by id, the whole scene's on every process: a process's particles pass to others
-// while they settle.
-template <int D>
-std::vector<Vec<D>> positions_by_id(const Simulation<D>& sim) {
-  const auto& P = sim.particles();
-  std::vector<unsigned char> mine;
-  for (std::size_t i = 0; i < P.real_count(); ++i) {
-    halo_bytes::put(mine, P.id[i]);
-    halo_bytes::put(mine, P.position[i]);
-  }
-  const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
-  const std::vector<unsigned char> all = comm ? gather_bytes_on_all(*comm, mine) : mine;
-  constexpr std::size_t record = sizeof(ParticleId) + sizeof(Vec<D>);
-  ParticleId end = 0;
-  for (std::size_t k = 0; k < all.size(); k += record) {
-    const unsigned char* in = all.data() + k;
-    end = std::max(end, halo_bytes::get<ParticleId>(in) + 1);
-  }
-  std::vector<Vec<D>> by_id(end, Vec<D>::Zero());
-  for (const unsigned char *in = all.data(), *stop = in + all.size(); in < stop;) {
-    const auto id = halo_bytes::get<ParticleId>(in);
-    by_id[id] = halo_bytes::get<Vec<D>>(in);
-  }
-  return by_id;
-}
-}  // namespace
 
 
 template <int D>
 Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
   out_.duration = plan.duration;
   out_.damping_rate = plan.damping_rate;
-  start_ = positions_by_id(sim);  // real particles (periodic ghosts come and go)
+  start_.emplace(sim.particles());  // real particles (periodic ghosts come and go)
   // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
   // bodies are detached and their particles stand still as walls.
   bodies_ = sim.detach_bodies();
@@ -111,7 +89,7 @@ Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
   saved_damping_rate_ = sim.options.velocity_damping_rate;
   sim.set_velocity_damping(plan.damping_rate);
   sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
-  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, start_, plan.held);
+  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, *start_, plan.held);
 }
 
 template <int D>
@@ -167,13 +145,13 @@ std::string left_while_settling(const Simulation<D>& sim, std::int64_t count, co
 // most, from where to where (among equal distances the lowest id, whatever the particles' order). Periodic in x: to
 // the nearest image (a particle wrapped across the period's ends has not moved a period).
 template <int D>
-void find_largest_shifts(const Simulation<D>& sim, const std::vector<Vec<D>>& start, const Communicator* comm,
+void find_largest_shifts(const Simulation<D>& sim, const StartPositions<D>& start, const Communicator* comm,
                          Relaxation& out) {
   const auto& P = sim.particles();
   constexpr std::size_t row = 2 + 2 * D;  // shift, id, from, to
   std::vector<double> mine;
   for (std::size_t i = 0; i < P.real_count(); ++i) {
-    Vec<D> shift = P.position[i] - start[P.id[i]];
+    Vec<D> shift = P.position[i] - start.of(P.id[i]);
     if (const auto& period = sim.options.periodic_x) shift[0] -= period->length() * std::round(shift[0] / period->length());
     out.largest_shift = std::max(out.largest_shift, shift.norm());
     if (P.kind[i] != Kind::fluid) continue;
@@ -222,7 +200,8 @@ Relaxation Settling<D>::finish() {
   Relaxation out = out_;
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();
-  find_largest_shifts(sim, start_, comm, out);
+  start_->follow(sim.particles(), comm);
+  find_largest_shifts(sim, *start_, comm, out);
   sim.set_velocity_damping(saved_damping_rate_);
   sim.set_rheology_suspended(false);
   if (floating_) {

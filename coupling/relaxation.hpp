@@ -18,6 +18,7 @@
 
 #include "coupling/advance.hpp"
 #include "coupling/simulation.hpp"
+#include "coupling/start_positions.hpp"
 #include "fluid/state_stream.hpp"
 
 namespace slide {
@@ -101,7 +102,7 @@ class Settling {
   class Observer;
   Simulation<D>& sim_;
   Relaxation out_;
-  std::vector<Vec<D>> start_;  // real particles' positions as built, by id
+  std::optional<StartPositions<D>> start_;  // real particles' positions as built
   std::shared_ptr<RigidBodies<D>> bodies_;
   bool floating_ = false;
   double saved_damping_rate_ = 0.0;

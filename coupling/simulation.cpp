@@ -238,8 +238,9 @@ void Simulation<D>::update_neighbors(bool force) {
   }
   build_neighbor_list(grid_, x, list_radius(), list_, domain_.particles.real_count());
   const std::size_t listed = list_.total();
-  if (most_listed_ == 0) listed_at_first_build_ = listed;
+  if (most_listed_ == 0) listed_at_first_build_ = listed, held_at_first_build_ = domain_.particles.size();
   most_listed_ = std::max(most_listed_, listed);
+  most_held_ = std::max(most_held_, domain_.particles.size());
   pair_weights_.forget();  // of the list before
   position_at_build_ = x;
   ++rebuilds_;

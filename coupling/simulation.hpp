@@ -213,6 +213,10 @@ class Simulation {
   // its largest size, which the memory estimate, taken at the first build, does not know (run.json reports both).
   std::size_t listed_at_first_build() const { return listed_at_first_build_; }
   std::size_t most_listed() const { return most_listed_; }
+  // The same of the particles held (owned and ghosts), which grow too on several processes as particles come into a
+  // process's cells.
+  std::size_t held_at_first_build() const { return held_at_first_build_; }
+  std::size_t most_held() const { return most_held_; }
   const ViscousSolveStats& viscous_solves() const { return viscous_solves_; }
   const ViscousSolveReport& last_viscous_solve() const { return last_viscous_solve_; }
   double max_fluid_speed() const;
@@ -303,7 +307,7 @@ class Simulation {
   std::vector<Vec<D>> predictor_acceleration_;  // semi-implicit viscous stage: a - grad p / rho given to the solve
   std::vector<Vec<D>> start_velocity_;  // semi-implicit viscous stage: u at the start of the step
   long rebuilds_ = 0;
-  std::size_t listed_at_first_build_ = 0, most_listed_ = 0;
+  std::size_t listed_at_first_build_ = 0, most_listed_ = 0, held_at_first_build_ = 0, most_held_ = 0;
   // P.gradient_correction holds the matrices of the last pressure stage for the particles in their present order
   // (the corrected gradient; a rebuild, which re-sorts, clears it; a checkpoint keeps both).
   bool correction_current_ = false;

@@ -601,18 +601,20 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
 // run.json's partition: the rebalance factor, repartitions and final imbalance, each process's owned particles and
 // what its exchanges took (seconds of the step loop refreshing ghosts, re-sorting across processes, reducing; bytes
 // sent), each process's memory (estimated, its peak so far, its neighbour list's size, the particles it made while
-// building), and the observers' copy's gathers and their seconds on the first process (costs: 9 per process, in order).
+// building, the particles it held, ghosts included, at the first build and the most at any), and the observers' copy's
+// gathers and their seconds on the first process (costs: 11 per process, in order).
 template <int D>
 json partition_json(const Domain<D>& domain, double imbalance, const std::vector<std::int64_t>& owned,
                     const std::vector<double>& costs, const ObserverCopy<D>* copy) {
   json per = json::array(), memory = json::array();
-  for (std::size_t r = 0; (r + 1) * 9 <= costs.size(); ++r) {
-    const double* c = &costs[r * 9];
+  for (std::size_t r = 0; (r + 1) * 11 <= costs.size(); ++r) {
+    const double* c = &costs[r * 11];
     per.push_back({{"halo_s", c[0]}, {"rebuild_s", c[1]}, {"reduction_s", c[2]}, {"bytes_sent", c[3]}});
     memory.push_back({{"memory_estimate_bytes", c[4]},
                       {"peak_resident_bytes", c[5]},
                       {"listed_neighbours", {{"at_first_build", c[6]}, {"most", c[7]}}},
-                      {"particles_made_at_build", c[8]}});
+                      {"particles_made_at_build", c[8]},
+                      {"particles_held", {{"at_first_build", c[9]}, {"most", c[10]}}}});
   }
   return {{"rebalance_imbalance", domain.rebalance_imbalance()}, {"repartitions", domain.repartitions()},
           {"imbalance", imbalance}, {"owned_particles", owned}, {"communication", per}, {"memory", memory},
@@ -761,7 +763,8 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
                                      {cost.halo_seconds, cost.rebuild_seconds, cost.reduction_seconds, cost.bytes_sent,
                                       scene->memory_estimate_bytes, peak_resident_bytes(),
                                       double(sim.listed_at_first_build()), double(sim.most_listed()),
-                                      double(scene->particles_made_here)})
+                                      double(scene->particles_made_here), double(sim.held_at_first_build()),
+                                      double(sim.most_held())})
                    : std::vector<double>{};
     if (!writes) return;
     const double wall = std::chrono::duration<double>(Clock::now() - loop_start).count();

@@ -19,9 +19,10 @@ print(f"owned at the end {p['owned_particles']}, repartitions {p['repartitions']
 failed = False
 for r, m in enumerate(p["memory"]):
     e, peak = m["memory_estimate_bytes"], m["peak_resident_bytes"]
-    listed = m["listed_neighbours"]
+    listed, held = m["listed_neighbours"], m["particles_held"]
     print(f"process {r}: estimate {e / 1e6:.1f} MB, peak {peak / 1e6:.1f} MB ({100 * (e / peak - 1):+.1f} %), "
-          f"listed {listed['at_first_build']:.0f} at the first build, at most {listed['most']:.0f}")
+          f"listed {listed['at_first_build']:.0f} at the first build, at most {listed['most']:.0f}; "
+          f"held {held['at_first_build']:.0f}, at most {held['most']:.0f}; made {m['particles_made_at_build']:.0f}")
     if not peak < e:
         print(f"FAIL: process {r}'s peak is above its estimate")
         failed = True
