@@ -10,6 +10,7 @@
 #include "cases/observed_particles.hpp"
 #include "cases/particle_budget.hpp"
 #include "cases/scene_build.hpp"
+#include "fluid/process_halo.hpp"
 #include "fluid/walls.hpp"
 
 namespace slide::cases {
@@ -160,16 +161,16 @@ void check_run_memory(SceneBuild<D>& b) {
     // its end, a share of four peaked 15 % above its estimate taken at the start.
     const double owned = double(sim.particles().real_count());
     const double largest_owned = sim.domain().imbalance_before_rebalance() * double(whole[0]) / comm->size();
-    if (owned > 0.0 && largest_owned > owned) in.particles = n * largest_owned / owned;
-    // The build is counted as the whole scene's, though a 3-D scene is built in parts (cases/build_share.hpp): counted
-    // as its part (run.json's particles_made_at_build), the estimate fell below the peak of a share's whole run, which
-    // run_memory_bytes counts short (stop 62, Mpi.WholeRunMemoryOnFour, the 3-D bench at dp 0.02 on 4 processes:
-    // estimates of 44.4-50.0 MB against peaks of 46.0-49.4 MB; a share's list grew 38 % as the water came into its
-    // cells). Until a share's run is counted in full, the whole scene's build stands in for it: an upper bound, as
-    // measured (51.7-57.3 MB against those peaks).
-    const ProcessMemoryInputs process{double(whole[0]), double(whole[0]), images * double(whole[2]),
-                                      comm->rank() == 0, b.scene->surge_front.enabled,
-                                      b.initial_state == InitialState::settled};
+    const double growth = owned > 0.0 && largest_owned > owned ? largest_owned / owned : 1.0;
+    in.particles = n * growth;
+    // The build is its part (a 3-D scene's, cases/build_share.hpp; a 2-D scene's whole). Until stop 63 the estimate
+    // counted the whole scene's build, which stood in for the ghosts' exchange (process_memory_bytes) and grew with the
+    // scene however many processes shared it.
+    ProcessMemoryInputs process{double(b.scene->particles_made_here), double(whole[0]), images * double(whole[2]),
+                                comm->rank() == 0, b.scene->surge_front.enabled,
+                                b.initial_state == InitialState::settled};
+    process.ghosts = double(sim.particles().ghost_count()) * growth;
+    process.ghost_entry_bytes = double(ProcessHalo<D>::ghost_entry_bytes(sim.particles()));
     b.scene->memory_estimate_bytes = program_resident_bytes() + process_memory_bytes(in, process);
   }
   b.scene->memory_list_growth_bytes = list_growth_bytes(in);  // (of this process's share, as counted above)

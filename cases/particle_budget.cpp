@@ -99,16 +99,23 @@ double run_memory_bytes(const RunMemoryInputs& in) { return first_steps_memory_b
 // measured. (Until stop 63 every process gathered every particle's id and position and kept the positions by id.) The copy's neighbour list: the
 // share's run's 18 (3-D) and 12 (2-D) B a listed neighbour (run_memory_bytes). Its fixed parts, found missing at stop
 // 58: the gated dam break (1,355 particles) peaked at 33.2 MB on the first of 4 processes against 32.1 MB estimated.
+// The ghosts' exchange (stop 63): where its ghosts are made (fluid/process_halo.hpp make_ghosts), a process holds
+// the entries it sends, per process and again in one buffer for the exchange, and those it receives: counted as
+// three entries a ghost (it sends about as many as it receives). Found when the build was counted as the part a
+// process makes (stop 62): a share's whole run, the 3-D bench at dp 0.02 on 4 processes (Mpi.WholeRunMemoryOnFour),
+// peaked 4 MB above that estimate on the share whose held particles grew most (16,454 to 20,162, half of them
+// ghosts of thin slabs), and the one-process constants above hold no ghosts' exchange.
 double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInputs& p) {
   const bool three_d = share.dimension == 3;
   const double mpi = 8.0e6, build = 350.0 * p.made;
+  const double ghosts_exchange = 1.05 * 3.0 * p.ghost_entry_bytes * p.ghosts;
   const double dimension = three_d ? 3.0 : 2.0;
   const double settling = p.settles ? (8.0 * dimension + 8.0) * share.particles + 16.0 * p.whole : 0.0;
   const double copy_per_particle = (three_d ? 350.0 : 280.0) +
                                    (p.copy_lists_neighbours ? (three_d ? 18.0 : 12.0) * share.listed_per_particle : 0.0);
   // The copy is a second scene: its fixed parts as a run's (below), without the snapshots' (it writes none).
   const double copy_fixed = 3.5e6 + (share.bodies_or_slides ? 1.0e6 : 0.0) + 1.0e6;
-  return mpi + build + run_memory_bytes(share) + settling +
+  return mpi + build + run_memory_bytes(share) + ghosts_exchange + settling +
          (p.first ? copy_fixed + copy_per_particle * p.copy_particles : 0.0);
 }
 

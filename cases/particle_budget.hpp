@@ -30,17 +30,19 @@ double list_growth_bytes(const RunMemoryInputs& in);
 
 // What one process of a run on several holds beside its share's run.
 struct ProcessMemoryInputs {
-  double made = 0.0;            // the particles counted as made by this process (check_run_memory: the whole scene's)
+  double made = 0.0;            // the particles this process made (a 2-D scene's all, its part of a 3-D scene)
   double whole = 0.0;           // the whole scene's particles
   double copy_particles = 0.0;  // the observers' copy's: the particles the outputs read, with their images
   bool first = false;           // the first process: it holds the copy
   bool copy_lists_neighbours = false;  // the copy lists its neighbours (the surge front reads them)
   bool settles = false;         // a settled start: its start positions (coupling/start_positions.hpp)
+  double ghosts = 0.0;          // the share's ghosts (other processes' particles and images) at its largest
+  double ghost_entry_bytes = 0.0;  // a ghost's entry as make_ghosts sends it (fluid/process_halo.hpp)
 };
 
 // One process of a run on several (cases::ForProcesses), above the program's own, bytes: an upper bound, the sum of
 // Open MPI's own, the build, its share's run (run_memory_bytes of `share`: its owned particles and ghosts, their
-// list), the settled start's positions and their gathering, and on the first process the observers' copy (with its
+// list), the ghosts' exchange, the settled start's positions, and on the first process the observers' copy (with its
 // list where it keeps one). The constants: particle_budget.cpp.
 double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInputs& process);
 

@@ -134,7 +134,7 @@ class ProcessHalo {
     }
     std::vector<std::size_t> received_bytes;
     const std::vector<unsigned char> in = exchange(out, comm, received_bytes);
-    const std::size_t entry = 1 + sizeof(Vec<D>) + record_bytes(P);
+    const std::size_t entry = ghost_entry_bytes(P);
     received_.resize(processes);
     const unsigned char* q = in.data();
     for (std::size_t r = 0; r < processes; ++r) {
@@ -208,6 +208,8 @@ class ProcessHalo {
     P.for_each_array([&](const auto& v) { n += sizeof(typename std::decay_t<decltype(v)>::value_type); });
     return n;
   }
+  // A ghost's entry in make_ghosts' exchange: its image's flip and offset, and its record.
+  static std::size_t ghost_entry_bytes(const Particles<D>& P) { return 1 + sizeof(Vec<D>) + record_bytes(P); }
   static void append_record(const Particles<D>& P, std::size_t i, std::vector<unsigned char>& out) {
     P.for_each_array([&](const auto& v) { halo_bytes::put(out, v[i]); });
   }
