@@ -96,8 +96,8 @@ double run_memory_bytes(const RunMemoryInputs& in) { return first_steps_memory_b
 // (8 + 8 D bytes a particle of its share, ghosts included: an upper bound), and where particles move between processes
 // every process holds the ids of those that moved, twice (its asks to every process, all processes' asks: 16 bytes a
 // particle of the whole scene, after a scene built in parts, where most move at the first re-sort). Counted, not
-// measured. (Until stop 63 every process gathered every particle's id and position and kept the positions by id.) The copy's neighbour list: the
-// share's run's 18 (3-D) and 12 (2-D) B a listed neighbour (run_memory_bytes). Its fixed parts, found missing at stop
+// measured. (Until stop 63 every process gathered every particle's id and position and kept the positions by id.)
+// The copy's neighbour list: the share's run's 18 (3-D) and 12 (2-D) B a listed neighbour (run_memory_bytes). Its fixed parts, found missing at stop
 // 58: the gated dam break (1,355 particles) peaked at 33.2 MB on the first of 4 processes against 32.1 MB estimated.
 // The ghosts' exchange (stop 63): where its ghosts are made (fluid/process_halo.hpp make_ghosts), a process holds
 // the entries it sends, per process and again in one buffer for the exchange, and those it receives: counted as
