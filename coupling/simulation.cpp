@@ -812,9 +812,9 @@ void Simulation<D>::save_state_after_particles(StateWriter& out) const {
   if (bodies_) bodies_->save_state(out);
 }
 
+// The state after the particle section (save_state_after_particles), read back.
 template <int D>
-void Simulation<D>::restore_state(StateReader& in) {
-  const bool correction = read_particle_section(in);
+void Simulation<D>::read_state_after_particles(StateReader& in) {
   in.get(domain_.particles.body_frames.body);
   in.get(domain_.particles.body_frames.offset);
   in.get(domain_.particles.body_frames.normal);
@@ -832,6 +832,30 @@ void Simulation<D>::restore_state(StateReader& in) {
   for (std::size_t i = 0; i < domain_.particles.real_count(); ++i)
     if (domain_.particles.body_frame[i] >= static_cast<std::int32_t>(domain_.particles.body_frames.body.size()))
       throw std::runtime_error("the checkpoint's body particles are not its bodies'");
+}
+
+template <int D>
+void Simulation<D>::restore_state(StateReader& in) {
+  // On several processes (a scene built in parts) each reads a part of the particles, in id order: what one refuses,
+  // all refuse, before the particles go to their processes.
+  const bool shared = domain_.distributed();
+  const auto made = static_cast<std::size_t>(domain_.sum_over_processes(std::int64_t(domain_.particles.id_end())));
+  std::string refusal;
+  bool correction = false;
+  try {
+    correction = read_particle_section(in, made);
+    read_state_after_particles(in);
+  } catch (const std::runtime_error& e) {
+    if (!shared) throw;
+    refusal = e.what();
+  }
+  if (shared) {
+    std::int64_t refused = refusal.empty() ? 0 : 1;
+    domain_.communicator()->max(&refused, 1);
+    if (refused != 0)
+      throw std::runtime_error(refusal.empty() ? "another process refused its part of the checkpoint" : refusal);
+    share_restored_particles(correction);
+  }
   // Stored, given ghosts, a neighbour list (built from the positions of the last re-sort) and the ghosts' fields as
   // the saved run held them; the semi-implicit predictor's buffer is filled by the next step.
   store_as_one_process(correction);

@@ -167,9 +167,11 @@ class Simulation {
 
   // Everything a step depends on beyond the scene (tools/checkpoint.hpp): the particles, time and counters, the
   // neighbour list's state (the positions it was built at, so that it is rebuilt at the same step), what was recorded
-  // so far, and the bodies'. Restoring expects a simulation made from the same scene and initialised, on one process;
-  // afterwards the particles are stored as one process held them (as adopt_whole_state leaves them) and the next step
-  // is the one the saved run would have taken, bit for bit.
+  // so far, and the bodies'. Restoring expects a simulation made from the same scene and initialised, on one process
+  // or built in parts on several (each process then reads a part of the particle section, any part, and they share
+  // the particles as a re-sort at the saved run's last positions would: a collective); afterwards the particles are
+  // stored as the processes held them (one: as adopt_whole_state leaves them) and the next step is the one the saved
+  // run would have taken, bit for bit.
   //
   // The state (written by tools/shared_checkpoint.hpp, on one process or several) is its particle section, then the
   // rest (save_state_after_particles). The particle section holds every
@@ -278,11 +280,15 @@ class Simulation {
   void append_state_record(std::size_t i, bool correction, std::vector<unsigned char>& out) const;
   void read_state_record(const unsigned char*& in, bool correction);
   // After the real particles and their build positions (and gradient matrices) were read in any order: stores them
-  // as one process holds them at this step (by cell of the positions of the last re-sort, by id within a cell), with
-  // their ghosts, neighbour list (unless an observers' copy needs none) and the ghosts' fields.
+  // as one process holds them at this step (by cell of the positions of the last re-sort, by id within a cell; on
+  // several processes, this one's cells' after share_restored_particles), with their ghosts, neighbour list (unless an
+  // observers' copy needs none) and the ghosts' fields.
   void store_as_one_process(bool correction);
-  // The particle section (restore_state) read back in id order; returns whether it holds gradient matrices.
-  bool read_particle_section(StateReader& in);
+  void share_restored_particles(bool correction);
+  // The particle section (restore_state) read back in id order, of a scene of `made` particles; returns whether it
+  // holds gradient matrices.
+  bool read_particle_section(StateReader& in, std::size_t made);
+  void read_state_after_particles(StateReader& in);
 
   Domain<D> domain_;
   std::shared_ptr<RigidBodies<D>> bodies_;

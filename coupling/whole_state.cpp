@@ -116,6 +116,36 @@ void Simulation<D>::drop_copy_particles() {
   particles_in_run_ = made;
 }
 
+// A resumed run on several processes (restore_state): each process read a part of the checkpoint's particles; each
+// particle goes whole (its record: every array, its position at the last re-sort, its gradient matrix) to the process
+// of its cell at its position of the last re-sort, the cells shared out anew by those positions, as the processes
+// of the saved run would hold it at its next re-sort (distribute does the same from the whole state).
+template <int D>
+void Simulation<D>::share_restored_particles(bool correction) {
+  auto& P = domain_.particles;
+  const Communicator& comm = *domain_.communicator();
+  domain_.share_cells_by(grid_, position_at_build_, [&] {
+    const std::size_t record = ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>) + (correction ? sizeof(Mat<D>) : 0);
+    const auto processes = static_cast<std::size_t>(comm.size());
+    std::vector<std::vector<std::uint32_t>> to(processes);  // the particles each process takes, in id order
+    for (std::size_t i = 0; i < P.real_count(); ++i)
+      to[static_cast<std::size_t>(domain_.owner_of_point(position_at_build_[i], grid_))].push_back(std::uint32_t(i));
+    std::vector<unsigned char> send;
+    send.reserve(P.real_count() * record);
+    std::vector<std::size_t> send_bytes(processes), received_bytes;
+    for (std::size_t r = 0; r < processes; ++r) {
+      for (const std::uint32_t i : to[r]) append_state_record(i, correction, send);
+      send_bytes[r] = to[r].size() * record;
+    }
+    const std::vector<unsigned char> in = comm.exchange(send, send_bytes, received_bytes);
+    std::vector<LeftParticle> left = std::move(left_the_domain_);
+    clear_particles(P, position_at_build_, left_the_domain_);
+    left_the_domain_ = std::move(left);
+    const unsigned char* q = in.data();
+    for (std::size_t k = 0; k < in.size() / record; ++k) read_state_record(q, correction);
+  });
+}
+
 template <int D>
 void Simulation<D>::store_as_one_process(bool correction) {
   auto& P = domain_.particles;
@@ -134,7 +164,7 @@ void Simulation<D>::store_as_one_process(bool correction) {
   }
   scratch_.resize(P.size(), Vec<D>::Zero());
   P.reorder(order, scratch_);
-  if (domain_.make_ghosts(list_radius())) {
+  if (domain_.make_ghosts(list_radius(), grid_)) {
     scratch_.resize(P.size(), Vec<D>::Zero());
     grid_.bin(P.position, key);
   } else {
@@ -210,11 +240,11 @@ void Simulation<D>::put_left_particles(StateWriter& out, std::vector<LeftParticl
   }
 }
 
-// The particle section (restore_state) read back in id order; returns whether it holds gradient matrices.
+// The particle section (restore_state) read back in id order, of a scene of `made` particles (on several processes:
+// this process's part of it); returns whether it holds gradient matrices.
 template <int D>
-bool Simulation<D>::read_particle_section(StateReader& in) {
+bool Simulation<D>::read_particle_section(StateReader& in, std::size_t made) {
   auto& P = domain_.particles;
-  const std::size_t made = P.real_count() + P.removed_count;
   const bool correction = in.get<std::uint8_t>() != 0;
   const auto record_bytes = in.get<std::uint64_t>(), particles = in.get<std::uint64_t>();
   const std::size_t expected = ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>) + (correction ? sizeof(Mat<D>) : 0);
@@ -228,13 +258,15 @@ bool Simulation<D>::read_particle_section(StateReader& in) {
   for (std::uint64_t k = 0; k < particles; ++k)
     if (P.id[k] >= made || (k > 0 && P.id[k] <= P.id[k - 1]))
       throw std::runtime_error("the checkpoint's particles are not the scene's");
-  P.removed_count = made - particles;
+  const bool shared = domain_.distributed();
+  P.removed_count = shared ? 0 : made - particles;  // (several processes: the others hold them)
   left_the_domain_.resize(in.get<std::uint64_t>());
   for (auto& l : left_the_domain_) {
     in.get(l.id);
     in.get(l.time);
     in.get(l.position);
   }
+  if (shared && domain_.communicator()->rank() > 0) left_the_domain_.clear();  // the first's to report, once
   return correction;
 }
 

@@ -281,6 +281,23 @@ class Domain {
   bool owns_point(const Vec<D>& point, const NeighborGrid<D>& grid) const {
     return !distributed() || halo_.owner(grid.linear(grid.cell_of(point))) == comm_->rank();
   }
+  // The process that owns the cell `point` lies in (several processes, after the cells are shared out).
+  int owner_of_point(const Vec<D>& point, const NeighborGrid<D>& grid) const { return halo_.owner_of(point, grid); }
+
+  // A resumed run whose processes each read a part of the checkpoint's particles (coupling/simulation.hpp,
+  // restore_state): the cells shared out anew by where `at` puts every process's particles (their positions at the
+  // last re-sort), as the first re-sort of a scene built in parts shares them; `send` then gives each particle to its
+  // cells' process (no ghosts present). Several processes.
+  template <class Send>
+  void share_cells_by(const NeighborGrid<D>& grid, const std::vector<Vec<D>>& at, Send&& send) {
+    std::vector<std::int64_t> weights(grid.total_cells(), 0);
+    for (std::size_t i = 0; i < owned_count(); ++i) ++weights[grid.linear(grid.cell_of(at[i]))];
+    comm_->sum(weights.data(), weights.size());
+    partition(grid, weights, false);
+    replicated_ = unpartitioned_ = false;
+    send();
+    imbalance_after_partition_ = imbalance();
+  }
 
  private:
   void refresh(HaloField f) {

@@ -1,7 +1,8 @@
 #include "tools/checkpoint.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
@@ -66,43 +67,148 @@ void write_checkpoint(const std::filesystem::path& run_dir, const Checkpoint& c)
   file.commit();
 }
 
-Checkpoint read_checkpoint(const std::filesystem::path& run_dir) {
-  const auto path = checkpoint_path(run_dir);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CheckpointError(fmt::format("no checkpoint in {} ({} cannot be read)", run_dir.string(), path.string()));
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t body = bytes.size() >= sizeof(std::uint64_t) ? bytes.size() - sizeof(std::uint64_t) : 0;
-  std::uint64_t stored = 0;
-  if (bytes.size() >= sizeof(kMagic) + sizeof(stored)) std::memcpy(&stored, bytes.data() + body, sizeof(stored));
-  if (bytes.size() < sizeof(kMagic) + sizeof(stored) || !std::equal(kMagic, kMagic + 8, bytes.begin()))
-    throw CheckpointError(fmt::format("{} is not a slide checkpoint", path.string()));
-  if (fnv1a(bytes.data(), body) != stored)
-    throw CheckpointError(fmt::format("{} is damaged (its checksum does not match: truncated or altered)", path.string()));
-  bytes.resize(body);  // the checksum off
-  StateReader r(bytes);
+namespace {
+
+// The file's bytes before its checksum, read where asked: what a part of a checkpoint needs without the whole in
+// memory. A read past them is a damaged file's (runtime_error, which read_checkpoint_part names as such).
+class CheckpointBytes {
+ public:
+  CheckpointBytes(const std::filesystem::path& run_dir, const std::filesystem::path& path)
+      : path_(path), in_(path, std::ios::binary) {
+    if (!in_)
+      throw CheckpointError(fmt::format("no checkpoint in {} ({} cannot be read)", run_dir.string(), path.string()));
+    in_.seekg(0, std::ios::end);
+    const auto size = static_cast<std::uint64_t>(in_.tellg());
+    char magic[sizeof(kMagic)] = {};
+    if (size >= sizeof(kMagic) + sizeof(stored_)) {
+      read_at(0, magic, sizeof(magic));
+      read_at(size - sizeof(stored_), &stored_, sizeof(stored_));
+    }
+    if (size < sizeof(kMagic) + sizeof(stored_) || !std::equal(kMagic, kMagic + 8, magic))
+      throw CheckpointError(fmt::format("{} is not a slide checkpoint", path.string()));
+    body_ = size - sizeof(stored_);
+    at_ = sizeof(kMagic);
+  }
+  // The checksum over the whole body, read a MiB at a time.
+  void verify() {
+    std::vector<char> chunk(std::size_t{1} << 20);
+    std::uint64_t h = kFnvStart;
+    for (std::uint64_t at = 0; at < body_; at += chunk.size()) {
+      const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(chunk.size(), body_ - at));
+      read_at(at, chunk.data(), n);
+      h = fnv1a(chunk.data(), n, h);
+    }
+    if (h != stored_)
+      throw CheckpointError(
+          fmt::format("{} is damaged (its checksum does not match: truncated or altered)", path_.string()));
+  }
+  template <class T>
+  T get() {
+    T value{};
+    take(&value, sizeof(T));
+    return value;
+  }
+  std::string get_string() {
+    std::string text(checked(get<std::uint64_t>()), '\0');
+    take(text.data(), text.size());
+    return text;
+  }
+  std::uint64_t at() const { return at_; }
+  std::uint64_t body() const { return body_; }
+  // The bytes [from, to) of the body appended to `out`.
+  void append(std::uint64_t from, std::uint64_t to, std::vector<char>& out) {
+    if (from > to || to > body_) throw std::runtime_error("the state is truncated");
+    const std::size_t was = out.size();
+    out.resize(was + static_cast<std::size_t>(to - from));
+    read_at(from, out.data() + was, static_cast<std::size_t>(to - from));
+  }
+
+ private:
+  std::uint64_t checked(std::uint64_t n) const {
+    if (n > body_ - at_) throw std::runtime_error("the state is truncated");
+    return n;
+  }
+  void take(void* out, std::size_t n) {
+    read_at(at_, out, checked(n));
+    at_ += n;
+  }
+  void read_at(std::uint64_t at, void* out, std::size_t n) {
+    in_.seekg(static_cast<std::streamoff>(at));
+    in_.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
+    if (!in_) throw CheckpointError(fmt::format("{} cannot be read", path_.string()));
+  }
+
+  std::filesystem::path path_;
+  std::ifstream in_;
+  std::uint64_t stored_ = 0, body_ = 0, at_ = 0;
+};
+
+CheckpointHeader read_header(CheckpointBytes& in, const std::filesystem::path& path) {
+  if (const auto format = in.get<std::uint32_t>(); format != kFormat)
+    throw CheckpointError(
+        fmt::format("{} has checkpoint format {}, this slide reads format {}", path.string(), format, kFormat));
+  CheckpointHeader h;
+  h.version = in.get_string();
+  h.scene_file = in.get_string();
+  h.overrides.resize(in.get<std::uint64_t>());
+  for (auto& o : h.overrides) o = in.get_string();
+  h.resolved_scene = in.get_string();
+  h.time = in.get<double>();
+  h.step = in.get<long>();
+  h.settling = in.get<std::uint8_t>() != 0;
+  return h;
+}
+
+// A read that fails on what the file holds is a damaged file's.
+template <class Read>
+auto damaged_if_failed(const std::filesystem::path& path, Read&& read) {
   try {
-    for (std::size_t k = 0; k < sizeof(kMagic); ++k) r.get<char>();
-    if (const auto format = r.get<std::uint32_t>(); format != kFormat)
-      throw CheckpointError(fmt::format("{} has checkpoint format {}, this slide reads format {}", path.string(), format,
-                                        kFormat));
-    Checkpoint c;
-    r.get(c.header.version);
-    r.get(c.header.scene_file);
-    c.header.overrides.resize(r.get<std::uint64_t>());
-    for (auto& o : c.header.overrides) r.get(o);
-    r.get(c.header.resolved_scene);
-    r.get(c.header.time);
-    r.get(c.header.step);
-    c.header.settling = r.get<std::uint8_t>() != 0;
-    const std::size_t state = r.remaining();
-    const unsigned char* from = r.take_bytes(state);
-    c.state.assign(from, from + state);
-    return c;
+    return read();
   } catch (const CheckpointError&) {
     throw;
   } catch (const std::runtime_error& e) {
     throw CheckpointError(fmt::format("{} is damaged: {}", path.string(), e.what()));
   }
+}
+
+}  // namespace
+
+Checkpoint read_checkpoint(const std::filesystem::path& run_dir) { return read_checkpoint_part(run_dir, 0, 1, true); }
+
+CheckpointHeader read_checkpoint_header(const std::filesystem::path& run_dir) {
+  const auto path = checkpoint_path(run_dir);
+  CheckpointBytes in(run_dir, path);
+  return damaged_if_failed(path, [&] { return read_header(in, path); });
+}
+
+// The state's particle section (coupling/simulation.hpp, restore_state) begins: u8 gradient matrices present, u64
+// record bytes, u64 particles, then the records; the part keeps the head with its own count, its records and all
+// that follows them.
+Checkpoint read_checkpoint_part(const std::filesystem::path& run_dir, std::uint64_t part, std::uint64_t parts,
+                                bool verify) {
+  const auto path = checkpoint_path(run_dir);
+  CheckpointBytes in(run_dir, path);
+  if (verify) in.verify();
+  return damaged_if_failed(path, [&] {
+    Checkpoint c;
+    c.header = read_header(in, path);
+    const auto correction = in.get<std::uint8_t>();
+    const auto record_bytes = in.get<std::uint64_t>(), particles = in.get<std::uint64_t>();
+    const std::uint64_t records = in.at();
+    if (record_bytes == 0 || particles > (in.body() - records) / record_bytes)
+      throw std::runtime_error("the state is truncated");
+    using Wide = unsigned __int128;  // (the products overflow 64 bits only for absurd counts, but need not at all)
+    const auto first = static_cast<std::uint64_t>(Wide(particles) * part / parts);
+    const auto end = static_cast<std::uint64_t>(Wide(particles) * (part + 1) / parts);
+    StateWriter head;
+    head.put(correction);
+    head.put(record_bytes);
+    head.put(end - first);
+    c.state.assign(head.bytes().begin(), head.bytes().end());
+    in.append(records + first * record_bytes, records + end * record_bytes, c.state);
+    in.append(records + particles * record_bytes, in.body(), c.state);
+    return c;
+  });
 }
 
 }  // namespace slide::tools

@@ -65,5 +65,14 @@ class CheckpointFile {
 // Throws CheckpointError when the file is missing, damaged or of another format; the version is for the caller to
 // compare (it names both).
 Checkpoint read_checkpoint(const std::filesystem::path& run_dir);
+// The header alone (the checksum not checked): what decides how the state is read.
+CheckpointHeader read_checkpoint_header(const std::filesystem::path& run_dir);
+// Part `part` of `parts` of a checkpoint, for a run resumed on several processes that each take a part of its
+// particles (tools/run_driver.cpp): its state holds the records [particles * part / parts, particles * (part + 1) /
+// parts) of the particle section (coupling/simulation.hpp, restore_state) and the whole of the rest, so that no
+// process reads the whole scene's particles. `verify`: the whole file's checksum checked too, reading it through a
+// MiB at a time (one process does, and the others take its word). read_checkpoint is part 0 of 1, verified.
+Checkpoint read_checkpoint_part(const std::filesystem::path& run_dir, std::uint64_t part, std::uint64_t parts,
+                                bool verify);
 
 }  // namespace slide::tools

@@ -303,6 +303,26 @@ struct PreparedRun {
   std::unique_ptr<cases::Scene<D>> observers_copy;
 };
 
+// A 3-D scene on several processes is built in parts (cases/build_share.hpp), new or resumed: no process makes the
+// whole scene, and a resumed run's processes each read a part of the checkpoint's particles (read_resumed_checkpoint).
+bool built_in_parts(const RunArguments& args, int dimension) {
+  return dimension == 3 && args.world && args.world->size() > 1;
+}
+
+// The observers' copy of a scene built in parts: every process builds its part (a collective), the first keeps it.
+// Returns false where the build was refused (on any process: every one returns false).
+template <int D>
+bool build_copy_in_parts(const RunArguments& args, const YAML::Node& resolved, const cases::SameMachine& machine,
+                         PreparedRun<D>& run) {
+  auto copy = build_or_report<D>(args, resolved, cases::StartOfRun::left_to_caller, {args.world, true, machine});
+  if (refused_anywhere(args, !copy)) return false;
+  if (args.world->rank() == 0) {
+    run.observers_copy = std::move(copy);
+    run.observers_copy->simulation->drop_copy_particles();
+  }
+  return true;
+}
+
 // A new run of its resolved scene: check the output folder, build (its settling is the run's: settle_before_the_run).
 template <int D>
 std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const std::optional<YAML::Node>& resolved,
@@ -316,14 +336,9 @@ std::optional<PreparedRun<D>> prepare_new_run(const RunArguments& args, const st
   const auto why = writes ? output_folder_problem(run.out) : std::nullopt;
   if (why) std::cerr << "slide: --out " << run.out.string() << ": " << *why << "; nothing was run or written\n";
   const bool several = args.world && args.world->size() > 1;
-  if (several && D == 3) {
-    // A 3-D scene is built in parts, the copy's too (a collective: cases/build_share.hpp), which only the first keeps:
-    // no process makes the whole scene.
+  if (built_in_parts(args, D)) {
     if (refused_anywhere(args, why.has_value())) return std::nullopt;
-    auto copy = build_or_report<D>(args, *resolved, cases::StartOfRun::left_to_caller, {args.world, true, machine});
-    if (refused_anywhere(args, !copy)) return std::nullopt;
-    if (writes) run.observers_copy = std::move(copy);
-    if (run.observers_copy) run.observers_copy->simulation->drop_copy_particles();
+    if (!build_copy_in_parts(args, *resolved, machine, run)) return std::nullopt;
   } else {
     const bool copy = !why && writes && several;
     if (copy) {
@@ -389,11 +404,21 @@ std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Chec
       return std::nullopt;
     }
   }
+  const auto start = h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled;
   try {
-    run.scene = cases::build_scene<D>(cases::load_yaml_text(h.resolved_scene), scene_file.stem().string(),
-                                   scene_file.parent_path().empty() ? "." : scene_file.parent_path(),
-                                   h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled,
-                                   {nullptr, false, machine});
+    const YAML::Node resolved = cases::load_yaml_text(h.resolved_scene);
+    if (built_in_parts(args, D)) {
+      // Built in parts as a new run is, its copy too: restore_state then shares the checkpoint's particles.
+      RunArguments scene_args = args;
+      scene_args.scene = scene_file;
+      if (!build_copy_in_parts(scene_args, resolved, machine, run)) return std::nullopt;
+      run.scene = build_or_report<D>(scene_args, resolved, start, {args.world, false, machine});
+      if (!run.scene) return std::nullopt;
+    } else {
+      run.scene = cases::build_scene<D>(resolved, scene_file.stem().string(),
+                                     scene_file.parent_path().empty() ? "." : scene_file.parent_path(), start,
+                                     {nullptr, false, machine});
+    }
   } catch (const cases::YamlTextRefused& e) {
     std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
               << "\n";
@@ -934,6 +959,14 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   }
 }
 
+// A resumed run's checkpoint: whole on each process, or where it is built in parts a part of its particles each (the
+// first checks the whole file's checksum; where it refuses, refused_anywhere stops the others with it).
+Checkpoint read_resumed_checkpoint(const RunArguments& args, int dimension) {
+  if (!built_in_parts(args, dimension)) return read_checkpoint(args.resume);
+  const auto rank = static_cast<std::uint64_t>(args.world->rank());
+  return read_checkpoint_part(args.resume, rank, static_cast<std::uint64_t>(args.world->size()), rank == 0);
+}
+
 }  // namespace
 
 int run_command(const RunArguments& args) {
@@ -956,14 +989,16 @@ int run_command(const RunArguments& args) {
     if (resolved) dimension = cases::scene_dimension(*resolved);
   } else {
     try {
-      checkpoint = read_checkpoint(args.resume);
-      dimension = cases::scene_dimension(cases::load_yaml_text(checkpoint->header.resolved_scene));
+      const CheckpointHeader header = read_checkpoint_header(args.resume);
+      try {
+        dimension = cases::scene_dimension(cases::load_yaml_text(header.resolved_scene));
+      } catch (const std::exception&) {
+        dimension = 2;  // a scene the checkpoint cannot give back: prepare_resumed_run says why
+      }
+      checkpoint = read_resumed_checkpoint(args, dimension);
     } catch (const CheckpointError& e) {
       std::cerr << "slide: --resume " << args.resume.string() << ": " << e.what() << "; nothing was run or written\n";
       refused = true;
-    } catch (const std::exception&) {
-      if (!checkpoint) throw;  // not the scene's text: what read_checkpoint threw goes on as it did
-      dimension = 2;  // a scene the checkpoint cannot give back: prepare_resumed_run says why
     }
   }
   if (refused_anywhere(args, refused)) return 2;
