@@ -5,9 +5,12 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <cstring>
 #include <set>
 #include <tuple>
 
+#include "fluid/state_stream.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tools/checkpoint.hpp"
 
@@ -195,6 +198,47 @@ fs::path stopped_run(const fs::path& dir) {
                                        (dir / "run").string()));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return dir / "run";
+}
+
+// A checkpoint read in parts (a 3-D run resumed on several processes): part k of n holds the particle section's head
+// with its own count, the records [7 k / n, 7 (k + 1) / n) of the 7, and the whole of the state after them; the parts'
+// records, in order, are the whole's. A synthetic state: 7 records of 5 bytes, then 4 bytes of the rest.
+TEST(Restart, ACheckpointReadInPartsHoldsEachPartsRecordsAndTheWholeRest) {
+  const auto dir = fresh_directory("restart_parts");
+  StateWriter state;
+  state.put<std::uint8_t>(1);
+  state.put<std::uint64_t>(5);
+  state.put<std::uint64_t>(7);
+  for (char b = 0; b < 35; ++b) state.put(b);
+  for (char b : {'r', 'e', 's', 't'}) state.put(b);
+  tools::Checkpoint whole;
+  whole.header.version = "test";
+  whole.header.resolved_scene = "dimension: 3";
+  whole.header.time = 0.25;
+  whole.header.step = 9;
+  whole.state = state.bytes();
+  tools::write_checkpoint(dir, whole);
+  EXPECT_EQ(tools::read_checkpoint(dir).state, whole.state);
+  const std::vector<char> head(whole.state.begin(), whole.state.begin() + 17);
+  const std::string rest = "rest";
+  for (std::uint64_t parts = 1; parts <= 4; ++parts) {
+    std::vector<char> records;
+    for (std::uint64_t part = 0; part < parts; ++part) {
+      const tools::Checkpoint c = tools::read_checkpoint_part(dir, part, parts, part == 0);
+      EXPECT_EQ(c.header.step, 9);
+      EXPECT_EQ(c.header.resolved_scene, "dimension: 3");
+      ASSERT_GE(c.state.size(), 21u);
+      EXPECT_TRUE(std::equal(head.begin(), head.begin() + 9, c.state.begin()));  // the matrices' flag, record bytes
+      std::uint64_t count = 0;
+      std::memcpy(&count, c.state.data() + 9, sizeof(count));
+      EXPECT_EQ(count, 7 * (part + 1) / parts - 7 * part / parts) << part << " of " << parts;
+      ASSERT_EQ(c.state.size(), 17 + 5 * count + 4);
+      EXPECT_EQ(std::string(c.state.end() - 4, c.state.end()), rest);
+      records.insert(records.end(), c.state.begin() + 17, c.state.end() - 4);
+    }
+    EXPECT_EQ(records, std::vector<char>(whole.state.begin() + 17, whole.state.end() - 4)) << parts << " parts";
+  }
+  fs::remove_all(dir);
 }
 
 TEST(Restart, AMissingOrDamagedCheckpointIsRefused) {

@@ -2,7 +2,9 @@
 # restart.sh SLIDE MPIEXEC OUT_DIR: the dam break to 0.05 s straight on one process, and stopped at 0.03 s (--stop-at,
 # which writes a checkpoint) on STOP processes and resumed (--resume) on RESUME processes, for STOP/RESUME 3/2 and 1/3:
 # every file but run.json the same byte for byte. The checkpoint is the run's state as one process holds it, whatever
-# the processes that wrote it. Then SIGTERM to mpirun during the run and while the water settles, resumed on 2.
+# the processes that wrote it. The same of the 3-D dam break, whose resumed run is built in parts, each process
+# reading a part of the checkpoint's particles (tools/checkpoint.hpp, read_checkpoint_part). Then SIGTERM to mpirun
+# during the run and while the water settles (2-D and 3-D), resumed on 2.
 set -uo pipefail
 slide="$1" mpiexec="$2" out="$3"
 scene="$(dirname "$0")/../../cases/dam_break_2d.yaml"
@@ -29,13 +31,38 @@ same_as() {
   echo "$3: $same files as the straight run's byte for byte, $differ differ"
   if [ "$differ" -ne 0 ] || [ "$same" -lt 3 ]; then failed=1; fi
 }
-for pair in 3/2 1/3; do
-  stop="${pair%/*}" resume="${pair#*/}" run="$out/stopped_on_${stop}_resumed_on_${resume}"
-  on "$stop" "$scene" --out "$run" --set end_time=0.05 --stop-at 0.03 || { echo "FAIL: stop on $stop"; exit 1; }
+# stop_and_resume STRAIGHT RUN STOP RESUME AT SCENE ARGS...: SCENE with ARGS stopped at AT on STOP processes, resumed on
+# RESUME, against STRAIGHT.
+stop_and_resume() {
+  local straight="$1" run="$2" stop="$3" resume="$4" at="$5"
+  shift 5
+  on "$stop" "$@" --out "$run" --stop-at "$at" || { echo "FAIL: stop on $stop"; exit 1; }
   [ -f "$run/checkpoint.bin" ] || { echo "FAIL: no checkpoint after the stop on $stop"; exit 1; }
   on "$resume" --resume "$run" || { echo "FAIL: resume on $resume"; exit 1; }
-  same_as "$out/straight" "$run" "stopped on $stop, resumed on $resume"
+  same_as "$straight" "$run" "$(basename "$run")"
+}
+for pair in 3/2 1/3; do
+  stop="${pair%/*}" resume="${pair#*/}"
+  stop_and_resume "$out/straight" "$out/stopped_on_${stop}_resumed_on_${resume}" "$stop" "$resume" 0.03 "$scene" \
+    --set end_time=0.05
 done
+scene_3d=("$(dirname "$0")/../../cases/dam_break_3d.yaml" --set particle_spacing=0.005715 --set end_time=0.03)
+"$slide" run "${scene_3d[@]}" --out "$out/straight_3d" --threads 1 --quiet || exit 1
+for pair in 3/2 1/3; do
+  stop="${pair%/*}" resume="${pair#*/}"
+  stop_and_resume "$out/straight_3d" "$out/3d_stopped_on_${stop}_resumed_on_${resume}" "$stop" "$resume" 0.02 \
+    "${scene_3d[@]}"
+done
+# No process of the 3-D resumed runs made the whole scene: each built its part (run.json's particles made at build).
+python3 - "$out"/3d_stopped_on_*/run.json <<'PY' || { echo "FAIL: a 3-D resumed run built whole"; failed=1; }
+import json, sys
+for path in sys.argv[1:]:
+    run = json.load(open(path))
+    made = [m["particles_made_at_build"] for m in run["partition"]["memory"]]
+    print(f"{path}: made at build {made} of {run['particles']['total']}")
+    if max(made) >= run["particles"]["total"]:
+        sys.exit(1)
+PY
 # terminate_and_resume LABEL STRAIGHT RUN EXPECTED WAIT SCENE ARGS...: slide run SCENE ARGS on 3 processes into RUN,
 # SIGTERM to mpirun once WAIT (a command, given mpirun's process id and RUN) returns, its run.json's message holding
 # EXPECTED and a checkpoint left; then
@@ -88,4 +115,9 @@ settling() {
 terminate_and_resume "settling" "$out/straight_gated" "$out/terminated_settling_on_3_resumed_on_2" \
   'while the water settled' settling "$(dirname "$0")/../../cases/dam_break_gated_2d.yaml" --set end_time=0.02 \
   --set method.settling_time=2
+# The same in 3-D: the floating box's water settles 0.3 s (6 s here) around the box held; built in parts, and resumed
+# in parts from the settling's checkpoint.
+terminate_and_resume "settling in 3-D" "$out/straight_box" "$out/3d_terminated_settling_on_3_resumed_on_2" \
+  'while the water settled' settling "$(dirname "$0")/../../cases/floating_box_3d.yaml" --set particle_spacing=0.02 \
+  --set method.settling_time=0.3 --set end_time=0.02
 exit "$failed"
