@@ -62,6 +62,30 @@ timeout 120 "$mpiexec" --oversubscribe -np 3 "$slide" run "$cases/dam_break_3d.y
   --set "fluid.regions=[{type: box, min: [0, 0, 0], max: [0.05715, 0.017145, 0.1143]}, $box, $box]" \
   >"$out/overlap_in_a_part.log" 2>&1
 expect_refusal $? overlap_in_a_part "process [12] of 3 .*fluid.regions\[2\]: overlaps fluid.regions\[1\]"
+# A damaged checkpoint of a 3-D run resumed on 3 processes, which each read a part of its particles and where the first
+# alone checks the whole file's checksum (tools/checkpoint.hpp, read_checkpoint_part): a byte flipped in the middle
+# (among the particles) stops every process with exit 2, the first saying why, the run's files as they were.
+damaged="$out/damaged_3d"
+"$slide" run "$cases/dam_break_3d.yaml" --out "$damaged" --threads 1 --quiet --set particle_spacing=0.005715 \
+  --set end_time=0.03 --stop-at 0.02 || { echo "FAIL: the stopped 3-D run"; failed=1; }
+python3 - "$damaged/checkpoint.bin" <<'PY'
+import sys
+data = bytearray(open(sys.argv[1], "rb").read())
+data[len(data) // 2] ^= 1
+open(sys.argv[1], "wb").write(data)
+PY
+gauges_before=$(md5sum <"$damaged/gauges.csv")
+timeout 120 "$mpiexec" --oversubscribe -np 3 "$slide" run --resume "$damaged" --threads 1 --quiet \
+  >"$out/damaged_3d.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || ! grep -q "is damaged (its checksum does not match" "$out/damaged_3d.log" ||
+  [ "$(md5sum <"$damaged/gauges.csv")" != "$gauges_before" ]; then
+  echo "FAIL damaged_3d: exit $code (expected 2, the checksum named, gauges.csv as it was):"
+  cat "$out/damaged_3d.log"
+  failed=1
+else
+  echo "ok damaged_3d: $(grep -m1 "is damaged" "$out/damaged_3d.log" | head -c 160)"
+fi
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
