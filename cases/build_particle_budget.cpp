@@ -178,7 +178,7 @@ void check_run_memory(SceneBuild<D>& b) {
   // A machine's memory (every limit but SLIDE_MEMORY_LIMIT) holds the estimates of the processes on it together, each
   // its own: the first's is the largest (collectives on every process, whatever its limit).
   // The machine's free memory as the least any of them read, so that they decide alike. A run each of whose processes
-  // holds the whole scene (a resumed run, built whole before it is shared): each its even part.
+  // holds the whole scene (a resumed 2-D run, built whole before it is shared): each its even part.
   double need = b.scene->memory_estimate_bytes, have = limit ? limit->total_bytes() : 0.0;
   const int here = b.machine.count();
   if (comm) {
