@@ -48,7 +48,7 @@ TEST(StartPositions, EachProcessGetsTheStartOfEveryParticleThatCameToIt) {
     if (id % 7 != 3) EXPECT_EQ(start.of(id), start_of(id)) << "particle " << id << " on process " << me;
 }
 
-// Every process made the whole scene (a 2-D scene, a resumed run): each keeps its own share's starts, one copy each.
+// Every process made the whole scene (a 2-D scene, a resumed 2-D run): each keeps its own share's starts, one copy each.
 TEST(StartPositions, ProcessesThatEachMadeTheWholeSceneKeepTheirShare) {
   const Communicator& comm = *world();
   const auto p = ParticleId(comm.size()), me = ParticleId(comm.rank());
