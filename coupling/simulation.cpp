@@ -852,8 +852,8 @@ void Simulation<D>::restore_state(StateReader& in) {
   if (shared) {
     std::int64_t refused = refusal.empty() ? 0 : 1;
     domain_.communicator()->max(&refused, 1);
-    if (refused != 0)
-      throw std::runtime_error(refusal.empty() ? "another process refused its part of the checkpoint" : refusal);
+    if (refused != 0 && refusal.empty()) throw StateRefusedElsewhere("another process refused its part of the checkpoint");
+    if (refused != 0) throw std::runtime_error(refusal);
     share_restored_particles(correction);
   }
   // Stored, given ghosts, a neighbour list (built from the positions of the last re-sort) and the ghosts' fields as

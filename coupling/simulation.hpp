@@ -70,6 +70,11 @@ struct TooManyProcesses : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// A checkpoint's state refused on another process (restore_state, several processes): that one says why.
+struct StateRefusedElsewhere : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 template <int D>
 class Simulation {
  public:
@@ -182,6 +187,8 @@ class Simulation {
   // A record: every per-particle array's value (fluid/process_halo.hpp), the position the neighbour list was built at,
   // and the corrected gradient's matrix of the last pressure stage where present (the semi-implicit predictor reads
   // it in the next step).
+  // (Throws std::runtime_error where the state is not this scene's; on several processes, StateRefusedElsewhere on
+  // those whose part was not refused where another's was.)
   void restore_state(StateReader& in);
   // This process's own particles' records in id order, and their ids: all, or those of [begin, end) of `order`
   // (owned_in_id_order: a part at a time).

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 
 #include "fluid/state_stream.hpp"
@@ -201,27 +202,27 @@ fs::path stopped_run(const fs::path& dir) {
 }
 
 // A checkpoint read in parts (a 3-D run resumed on several processes): part k of n holds the particle section's head
-// with its own count, the records [7 k / n, 7 (k + 1) / n) of the 7, and the whole of the state after them; the parts'
-// records, in order, are the whole's. A synthetic state: 7 records of 5 bytes, then 4 bytes of the rest.
-TEST(Restart, ACheckpointReadInPartsHoldsEachPartsRecordsAndTheWholeRest) {
-  const auto dir = fresh_directory("restart_parts");
+// with its own count, the records [N k / n, N (k + 1) / n) of the N, and the whole of the state after them; the parts'
+// records, in order, are the whole's. Synthetic states: N records of 5 bytes (N = 7, and none), then 4 bytes of the
+// rest; 1 to 4 parts and 9 (more than the records).
+void expect_parts_of(std::uint64_t particles) {
+  const auto dir = fresh_directory("restart_parts_" + std::to_string(particles));
   StateWriter state;
   state.put<std::uint8_t>(1);
   state.put<std::uint64_t>(5);
-  state.put<std::uint64_t>(7);
-  for (char b = 0; b < 35; ++b) state.put(b);
+  state.put<std::uint64_t>(particles);
+  for (std::uint64_t b = 0; b < 5 * particles; ++b) state.put(static_cast<char>(b));
   for (char b : {'r', 'e', 's', 't'}) state.put(b);
   tools::Checkpoint whole;
   whole.header.version = "test";
   whole.header.resolved_scene = "dimension: 3";
-  whole.header.time = 0.25;
   whole.header.step = 9;
   whole.state = state.bytes();
   tools::write_checkpoint(dir, whole);
   EXPECT_EQ(tools::read_checkpoint(dir).state, whole.state);
+  EXPECT_EQ(tools::read_checkpoint_header(dir).step, 9);
   const std::vector<char> head(whole.state.begin(), whole.state.begin() + 17);
-  const std::string rest = "rest";
-  for (std::uint64_t parts = 1; parts <= 4; ++parts) {
+  for (const std::uint64_t parts : {1, 2, 3, 4, 9}) {
     std::vector<char> records;
     for (std::uint64_t part = 0; part < parts; ++part) {
       const tools::Checkpoint c = tools::read_checkpoint_part(dir, part, parts, part == 0);
@@ -231,14 +232,20 @@ TEST(Restart, ACheckpointReadInPartsHoldsEachPartsRecordsAndTheWholeRest) {
       EXPECT_TRUE(std::equal(head.begin(), head.begin() + 9, c.state.begin()));  // the matrices' flag, record bytes
       std::uint64_t count = 0;
       std::memcpy(&count, c.state.data() + 9, sizeof(count));
-      EXPECT_EQ(count, 7 * (part + 1) / parts - 7 * part / parts) << part << " of " << parts;
+      EXPECT_EQ(count, particles * (part + 1) / parts - particles * part / parts) << part << " of " << parts;
       ASSERT_EQ(c.state.size(), 17 + 5 * count + 4);
-      EXPECT_EQ(std::string(c.state.end() - 4, c.state.end()), rest);
+      EXPECT_EQ(std::string(c.state.end() - 4, c.state.end()), "rest");
       records.insert(records.end(), c.state.begin() + 17, c.state.end() - 4);
     }
     EXPECT_EQ(records, std::vector<char>(whole.state.begin() + 17, whole.state.end() - 4)) << parts << " parts";
   }
+  EXPECT_THROW(tools::read_checkpoint_part(dir, 3, 3, false), std::invalid_argument);
   fs::remove_all(dir);
+}
+
+TEST(Restart, ACheckpointReadInPartsHoldsEachPartsRecordsAndTheWholeRest) {
+  expect_parts_of(7);
+  expect_parts_of(0);
 }
 
 TEST(Restart, AMissingOrDamagedCheckpointIsRefused) {

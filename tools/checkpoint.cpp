@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
+#include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -186,6 +188,8 @@ CheckpointHeader read_checkpoint_header(const std::filesystem::path& run_dir) {
 // that follows them.
 Checkpoint read_checkpoint_part(const std::filesystem::path& run_dir, std::uint64_t part, std::uint64_t parts,
                                 bool verify) {
+  if (part >= parts) throw std::invalid_argument("read_checkpoint_part: part " + std::to_string(part) + " of " +
+                                                 std::to_string(parts));
   const auto path = checkpoint_path(run_dir);
   CheckpointBytes in(run_dir, path);
   if (verify) in.verify();
@@ -195,8 +199,8 @@ Checkpoint read_checkpoint_part(const std::filesystem::path& run_dir, std::uint6
     const auto correction = in.get<std::uint8_t>();
     const auto record_bytes = in.get<std::uint64_t>(), particles = in.get<std::uint64_t>();
     const std::uint64_t records = in.at();
-    if (record_bytes == 0 || particles > (in.body() - records) / record_bytes)
-      throw std::runtime_error("the state is truncated");
+    if (record_bytes == 0) throw std::runtime_error("its particle section is malformed (records of 0 bytes)");
+    if (particles > (in.body() - records) / record_bytes) throw std::runtime_error("the state is truncated");
     using Wide = unsigned __int128;  // (the products overflow 64 bits only for absurd counts, but need not at all)
     const auto first = static_cast<std::uint64_t>(Wide(particles) * part / parts);
     const auto end = static_cast<std::uint64_t>(Wide(particles) * (part + 1) / parts);

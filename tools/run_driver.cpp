@@ -149,6 +149,12 @@ std::optional<YAML::Node> resolve_or_report(const RunArguments& args) {
   }
 }
 
+// What a refused scene's message begins with: the scene file's, or a resumed run's checkpoint's.
+std::string refusal_of_scene(const RunArguments& args) {
+  return args.resume.empty() ? "slide: invalid scene " + args.scene.string() + ": "
+                             : "slide: --resume " + args.resume.string() + ": the checkpoint's scene is refused: ";
+}
+
 // Builds the resolved scene; on a scene error prints it and returns null (the caller exits 2).
 template <int D>
 std::unique_ptr<cases::Scene<D>> build_or_report(const RunArguments& args, const YAML::Node& resolved,
@@ -162,7 +168,7 @@ std::unique_ptr<cases::Scene<D>> build_or_report(const RunArguments& args, const
     refused_elsewhere = true;
     return nullptr;
   } catch (const cases::SceneError& e) {
-    std::cerr << "slide: invalid scene " << args.scene.string() << ": " << e.what() << "\n";
+    std::cerr << refusal_of_scene(args) << e.what() << "\n";
     return nullptr;
   }
 }
@@ -298,7 +304,7 @@ struct PreparedRun {
   CheckpointHeader header;  // what its checkpoints will say
   std::optional<Checkpoint> resumed_from;    // a checkpoint of the run (after t = 0) to continue from
   std::optional<Checkpoint> settling_from;   // a checkpoint taken while the water settled, to settle on from
-  // A new run on several processes: the first's observers' copy (tools/observer_copy.hpp), built before the scene so
+  // A run on several processes: the first's observers' copy (tools/observer_copy.hpp), built before the scene so
   // that the building's passing memory is not taken on top of the running share (null elsewhere: distribute_run).
   std::unique_ptr<cases::Scene<D>> observers_copy;
 };
@@ -370,6 +376,34 @@ std::string first_difference(const std::string& a, const std::string& b) {
   }
 }
 
+// Whether the checkpoint can be resumed with these arguments: its version is this slide's, and a scene given is its
+// own with its --set; else says why (exit 2).
+bool resumes_as_given(const RunArguments& args, const CheckpointHeader& h) {
+  if (h.version != checkpoint_writer()) {
+    std::cerr << fmt::format("slide: --resume {}: the checkpoint was written by slide {} and this is slide {}: its "
+                             "state is not this version's; resume it with the slide that wrote it or run the scene "
+                             "again\n",
+                             args.resume.string(), h.version, checkpoint_writer());
+    return false;
+  }
+  if (args.scene.empty() && !args.overrides.empty()) {
+    std::cerr << "slide: --resume " << args.resume.string() << ": --set needs the scene file too (slide run SCENE "
+              << "--set ... --resume DIR), and they must be the checkpoint's: a resumed run continues its scene as it "
+                 "was\n";
+    return false;
+  }
+  if (args.scene.empty()) return true;
+  const auto resolved = resolve_or_report(args);
+  if (!resolved) return false;
+  if (const std::string given = YAML::Dump(*resolved); given != h.resolved_scene) {
+    std::cerr << fmt::format("slide: --resume {}: the checkpoint belongs to another scene than {} with these --set "
+                             "(first difference: {}); resume without a scene to continue the checkpoint's own\n",
+                             args.resume.string(), args.scene.string(), first_difference(given, h.resolved_scene));
+    return false;
+  }
+  return true;
+}
+
 // A resumed run: the checkpoint's scene (or the one given, which must be the same), built without settling, then the
 // checkpoint's state put back; or, from a checkpoint taken while settling, built to settle on from it. Refusals name
 // why (exit 2). The checkpoint is read already (read_resumed_checkpoint).
@@ -380,54 +414,28 @@ std::optional<PreparedRun<D>> prepare_resumed_run(const RunArguments& args, Chec
   run.out = args.resume;
   run.resumed_from = std::move(checkpoint);
   const CheckpointHeader& h = run.resumed_from->header;
-  if (h.version != checkpoint_writer()) {
-    std::cerr << fmt::format("slide: --resume {}: the checkpoint was written by slide {} and this is slide {}: its "
-                             "state is not this version's; resume it with the slide that wrote it or run the scene "
-                             "again\n",
-                             args.resume.string(), h.version, checkpoint_writer());
-    return std::nullopt;
-  }
-  if (args.scene.empty() && !args.overrides.empty()) {
-    std::cerr << "slide: --resume " << args.resume.string() << ": --set needs the scene file too (slide run SCENE "
-              << "--set ... --resume DIR), and they must be the checkpoint's: a resumed run continues its scene as it "
-                 "was\n";
-    return std::nullopt;
-  }
-  const std::filesystem::path scene_file = args.scene.empty() ? std::filesystem::path(h.scene_file) : args.scene;
-  if (!args.scene.empty()) {
-    const auto resolved = resolve_or_report(args);
-    if (!resolved) return std::nullopt;
-    if (const std::string given = YAML::Dump(*resolved); given != h.resolved_scene) {
-      std::cerr << fmt::format("slide: --resume {}: the checkpoint belongs to another scene than {} with these --set "
-                               "(first difference: {}); resume without a scene to continue the checkpoint's own\n",
-                               args.resume.string(), args.scene.string(), first_difference(given, h.resolved_scene));
-      return std::nullopt;
-    }
-  }
-  const auto start = h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled;
+  // Built in parts, the build is a collective: a refusal here is agreed first (a scene file one process cannot read).
+  const bool refused = !resumes_as_given(args, h);
+  if (built_in_parts(args, D) ? refused_anywhere(args, refused) : refused) return std::nullopt;
+  std::optional<YAML::Node> resolved;
   try {
-    const YAML::Node resolved = cases::load_yaml_text(h.resolved_scene);
-    if (built_in_parts(args, D)) {
-      // Built in parts as a new run is, its copy too: restore_state then shares the checkpoint's particles.
-      RunArguments scene_args = args;
-      scene_args.scene = scene_file;
-      if (!build_copy_in_parts(scene_args, resolved, machine, run)) return std::nullopt;
-      run.scene = build_or_report<D>(scene_args, resolved, start, {args.world, false, machine});
-      if (!run.scene) return std::nullopt;
-    } else {
-      run.scene = cases::build_scene<D>(resolved, scene_file.stem().string(),
-                                     scene_file.parent_path().empty() ? "." : scene_file.parent_path(), start,
-                                     {nullptr, false, machine});
-    }
+    resolved = cases::load_yaml_text(h.resolved_scene);
   } catch (const cases::YamlTextRefused& e) {
     std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
               << "\n";
     return std::nullopt;
-  } catch (const cases::SceneError& e) {
-    std::cerr << "slide: --resume " << args.resume.string() << ": the checkpoint's scene is refused: " << e.what()
-              << "\n";
-    return std::nullopt;
   }
+  RunArguments scene_args = args;  // the checkpoint's scene, its files beside it
+  scene_args.scene = args.scene.empty() ? std::filesystem::path(h.scene_file) : args.scene;
+  const auto start = h.settling ? cases::StartOfRun::left_to_caller : cases::StartOfRun::already_settled;
+  if (built_in_parts(args, D)) {
+    // Built in parts as a new run is, its copy too: restore_state then shares the checkpoint's particles.
+    if (!build_copy_in_parts(scene_args, *resolved, machine, run)) return std::nullopt;
+    run.scene = build_or_report<D>(scene_args, *resolved, start, {args.world, false, machine});
+  } else {
+    run.scene = build_or_report<D>(scene_args, *resolved, start, {nullptr, false, machine});
+  }
+  if (!run.scene) return std::nullopt;
   run.header = h;
   if (h.settling) run.settling_from = std::exchange(run.resumed_from, std::nullopt);
   run.header.settling = false;  // the run's own checkpoints, once it runs, are not the settling's (found in review)
@@ -529,6 +537,18 @@ const Communicator& world_of(const RunArguments& args) {
   return args.world ? *args.world : alone;
 }
 
+// A checkpoint's state refused while it was put back: exit 2. Every process refuses alike (each put back the whole
+// state), or on several processes that each put back a part, one or more refused theirs and the others were told
+// (StateRefusedElsewhere): the one that refused says why (refused_anywhere).
+int refuse_resumed_state(const RunArguments& args, const std::filesystem::path& out, const std::runtime_error& e) {
+  if (dynamic_cast<const StateRefusedElsewhere*>(&e))
+    refused_elsewhere = true;
+  else
+    std::cerr << "slide: --resume " << out.string() << ": " << e.what() << "; nothing was run\n";
+  refused_anywhere(args, true);
+  return 2;
+}
+
 // A run on several processes, beside its running simulation: the first process's observers' copy
 // (tools/observer_copy.hpp) and what brings it up to date. Absent on one process.
 template <int D>
@@ -589,9 +609,9 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
         sim.restore_state(in);
         settling.restore_state(in);
       } catch (const std::runtime_error& e) {
-        std::cerr << "slide: --resume " << run.out.string() << ": " << e.what() << "; nothing was run\n";
-        return 2;
+        return refuse_resumed_state(args, run.out, e);
       }
+      std::vector<char>().swap(run.settling_from->state);  // put back (the header stays, for run.json)
     }
     if (!share()) return 2;
     InterruptWatch<D> interrupt(std::numeric_limits<double>::infinity(), args.world.get());
@@ -682,16 +702,16 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
   auto& sim = *scene->simulation;
   for (const auto& slide : scene->slides)  // what the user would not expect of a slide, said before it runs
     if (!slide.floats_warning.empty()) std::cerr << "slide: warning: " << slide.floats_warning << "\n";
-  // A resumed run's state, whole on every process (before it is shared among them); the outputs' and checkpoints'
-  // state after it in the same stream, read by the process that writes them.
+  // A resumed run's state: whole on every process (before it is shared among them), or where the scene is built in
+  // parts the particles of a part each; the outputs' and checkpoints' state after it in the same stream, read by the
+  // process that writes them.
   std::optional<StateReader> resumed_state;
   if (run->resumed_from) {
     try {
       resumed_state.emplace(run->resumed_from->state);
       sim.restore_state(*resumed_state);
     } catch (const std::runtime_error& e) {
-      std::cerr << "slide: --resume " << out.string() << ": " << e.what() << "; nothing was run\n";
-      return 2;
+      return refuse_resumed_state(args, out, e);
     }
   }
   std::optional<ProcessesOfRun<D>> processes;
@@ -731,6 +751,9 @@ int run_scene(const RunArguments& args, const std::optional<YAML::Node>& resolve
     if (!refusal.empty()) std::cerr << "slide: --resume " << out.string() << ": " << refusal << "; nothing was run\n";
     return 2;
   }
+  // The checkpoint's state is put back: its bytes go (the header stays, for run.json).
+  resumed_state.reset();
+  if (run->resumed_from) std::vector<char>().swap(run->resumed_from->state);
   // Several processes: a snapshot of every process's own particles (or of their last good state), a collective; the
   // first's outputs call it where they write one, the others join it.
   const SnapshotFormat snapshot_format_of_scene = snapshot_format(*scene);
@@ -989,11 +1012,12 @@ int run_command(const RunArguments& args) {
     if (resolved) dimension = cases::scene_dimension(*resolved);
   } else {
     try {
-      const CheckpointHeader header = read_checkpoint_header(args.resume);
+      // The header says how the state is read (a damaged one is read whole, which checks the checksum first and names
+      // the fault; a scene the checkpoint cannot give back too: prepare_resumed_run says why).
       try {
-        dimension = cases::scene_dimension(cases::load_yaml_text(header.resolved_scene));
+        dimension = cases::scene_dimension(cases::load_yaml_text(read_checkpoint_header(args.resume).resolved_scene));
       } catch (const std::exception&) {
-        dimension = 2;  // a scene the checkpoint cannot give back: prepare_resumed_run says why
+        dimension = 2;
       }
       checkpoint = read_resumed_checkpoint(args, dimension);
     } catch (const CheckpointError& e) {

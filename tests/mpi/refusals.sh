@@ -86,6 +86,46 @@ if [ "$code" -ne 2 ] || ! grep -q "is damaged (its checksum does not match" "$ou
 else
   echo "ok damaged_3d: $(grep -m1 "is damaged" "$out/damaged_3d.log" | head -c 160)"
 fi
+# A checkpoint whose last particle's id is past the scene's (its checksum made anew): the last of 3 processes, which
+# reads that part, refuses it alone; every process exits 2 and that one says why, with its number.
+"$slide" run "$cases/dam_break_3d.yaml" --out "$out/wrong_id" --threads 1 --quiet --set particle_spacing=0.005715 \
+  --set end_time=0.03 --stop-at 0.02 || { echo "FAIL: the stopped 3-D run"; failed=1; }
+python3 - "$out/wrong_id/checkpoint.bin" <<'PY'
+import struct, sys
+data = bytearray(open(sys.argv[1], "rb").read())
+at = 12  # magic, format
+def string():
+    global at
+    n = struct.unpack_from("<Q", data, at)[0]
+    at += 8 + n
+string(); string()  # version, scene file
+overrides = struct.unpack_from("<Q", data, at)[0]
+at += 8
+for _ in range(overrides):
+    string()
+string()  # resolved scene
+at += 8 + 8 + 1  # time, step, settling
+record_bytes, particles = struct.unpack_from("<QQ", data, at + 1)
+last = at + 17 + (particles - 1) * record_bytes
+id_at = bytes(data[last:last + record_bytes]).find(struct.pack("<Q", particles - 1))
+struct.pack_into("<Q", data, last + id_at, particles + 5)
+h = 1469598103934665603
+for b in data[:-8]:
+    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+struct.pack_into("<Q", data, len(data) - 8, h)
+open(sys.argv[1], "wb").write(data)
+PY
+timeout 120 "$mpiexec" --oversubscribe -np 3 "$slide" run --resume "$out/wrong_id" --threads 1 --quiet \
+  >"$out/wrong_id.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || ! grep -q "process 2 of 3 .*the checkpoint's particles are not the scene's" "$out/wrong_id.log"
+then
+  echo "FAIL wrong_id: exit $code (expected 2, the last process saying why):"
+  cat "$out/wrong_id.log"
+  failed=1
+else
+  echo "ok wrong_id: $(grep -m1 "process 2 of 3" "$out/wrong_id.log" | head -c 160)"
+fi
 # A full disk on the first process, which writes: a small tmpfs where one can be mounted (root), else skipped.
 disk="$out/full_disk"
 mkdir -p "$disk"
