@@ -166,7 +166,7 @@ void check_run_memory(SceneBuild<D>& b) {
     // The build is its part (a 3-D scene's, cases/build_share.hpp; a 2-D scene's whole). Until stop 63 the estimate
     // counted the whole scene's build, which stood in for the ghosts' exchange (process_memory_bytes) and grew with the
     // scene however many processes shared it.
-    ProcessMemoryInputs process{double(b.scene->particles_made_here), double(whole[0]), images * double(whole[2]),
+    ProcessMemoryInputs process{double(b.scene->particles_made_here), images * double(whole[2]),
                                 comm->rank() == 0, b.scene->surge_front.enabled,
                                 b.initial_state == InitialState::settled};
     process.ghosts = double(sim.particles().ghost_count()) * growth;

@@ -94,9 +94,11 @@ double run_memory_bytes(const RunMemoryInputs& in) { return first_steps_memory_b
 // 184 MB (the others) and 291 MB (the first) against peaks of 126-130 MB and 235-240 MB.
 // The settled start (coupling/start_positions.hpp): each process keeps its own particles' ids and start positions
 // (8 + 8 D bytes a particle of its share, ghosts included: an upper bound), and where particles move between processes
-// every process holds the ids of those that moved, twice (its asks to every process, all processes' asks: 16 bytes a
-// particle of the whole scene, after a scene built in parts, where most move at the first re-sort). Counted, not
-// measured. (Until stop 63 every process gathered every particle's id and position and kept the positions by id.)
+// a follow holds the starts that left it, twice (its list and the exchange's buffer), and those its id range was
+// given, twice (the buffer and the list): at most the particles it made each, 4 (8 + 8 D) bytes a particle made (the
+// asks and answers are fewer). Counted, not measured. (Until stop 63 every process gathered every particle's id and
+// position and kept the positions by id; until stop 64 every process received every moved particle's id, 16 bytes a
+// particle of the whole scene.)
 // The copy's neighbour list: the share's run's 18 (3-D) and 12 (2-D) B a listed neighbour (run_memory_bytes). Its fixed parts, found missing at stop
 // 58: the gated dam break (1,355 particles) peaked at 33.2 MB on the first of 4 processes against 32.1 MB estimated.
 // The ghosts' exchange (stop 63): where its ghosts are made (fluid/process_halo.hpp make_ghosts), a process holds
@@ -110,7 +112,7 @@ double process_memory_bytes(const RunMemoryInputs& share, const ProcessMemoryInp
   const double mpi = 8.0e6, build = 350.0 * p.made;
   const double ghosts_exchange = 1.05 * 3.0 * p.ghost_entry_bytes * p.ghosts;
   const double dimension = three_d ? 3.0 : 2.0;
-  const double settling = p.settles ? (8.0 * dimension + 8.0) * share.particles + 16.0 * p.whole : 0.0;
+  const double settling = p.settles ? (8.0 * dimension + 8.0) * (share.particles + 4.0 * p.made) : 0.0;
   const double copy_per_particle = (three_d ? 350.0 : 280.0) +
                                    (p.copy_lists_neighbours ? (three_d ? 18.0 : 12.0) * share.listed_per_particle : 0.0);
   // The copy is a second scene: its fixed parts as a run's (below), without the snapshots' (it writes none).

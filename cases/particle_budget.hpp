@@ -31,7 +31,6 @@ double list_growth_bytes(const RunMemoryInputs& in);
 // What one process of a run on several holds beside its share's run.
 struct ProcessMemoryInputs {
   double made = 0.0;            // the particles this process made (a 2-D scene's all, its part of a 3-D scene)
-  double whole = 0.0;           // the whole scene's particles
   double copy_particles = 0.0;  // the observers' copy's: the particles the outputs read, with their images
   bool first = false;           // the first process: it holds the copy
   bool copy_lists_neighbours = false;  // the copy lists its neighbours (the surge front reads them)
