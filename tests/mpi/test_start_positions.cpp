@@ -60,6 +60,19 @@ TEST(StartPositions, ProcessesThatEachMadeTheWholeSceneKeepTheirShare) {
     else EXPECT_THROW(start.of(id), std::logic_error) << "particle " << id << " is another process's";
 }
 
+// Every process but the last made the whole scene and the last made none: each particle's start is sent to its id's
+// home by every process but the last (copies, one kept), and the last is answered for its own.
+TEST(StartPositions, CopiesOfAStartFromSeveralProcessesGiveOneAnswer) {
+  const Communicator& comm = *world();
+  const auto p = ParticleId(comm.size()), me = ParticleId(comm.rank());
+  const bool made_all = p == 1 || me + 1 < p;
+  StartPositions<3> start(particles_where([&](ParticleId) { return made_all; }, start_of));
+  const auto owned_now = [&](ParticleId id) { return id % p == me; };
+  start.follow(particles_where(owned_now, start_of), &comm);
+  for (ParticleId id = 0; id < kParticles; ++id)
+    if (owned_now(id)) EXPECT_EQ(start.of(id), start_of(id)) << "particle " << id << " on process " << me;
+}
+
 // One process: a follow drops the particles that left, and asks no one for a start it never had.
 TEST(StartPositions, OneProcessDropsTheParticlesThatLeft) {
   StartPositions<3> start(particles_where([](ParticleId id) { return id < 10; }, start_of));
