@@ -183,7 +183,7 @@ class Simulation {
   // real particle in id order and those that left the domain by time, then id, whichever process held them, so that
   // a checkpoint does not say how many processes wrote it (tools/shared_checkpoint.hpp writes one from every
   // process's own particles):
-  //   u8 gradient matrices present, u64 record bytes, u64 particles, the records, u64 left, the left particles
+  //   its head (fluid/particle_section_head.hpp), the records, u64 left, the left particles
   // A record: every per-particle array's value (fluid/process_halo.hpp), the position the neighbour list was built at,
   // and the corrected gradient's matrix of the last pressure stage where present (the semi-implicit predictor reads
   // it in the next step).
@@ -201,8 +201,6 @@ class Simulation {
   StateRecords state_records() const;
   std::vector<std::uint32_t> owned_in_id_order() const;
   StateRecords state_records(const std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end) const;
-  static void put_particle_section_head(StateWriter& out, bool correction, std::uint64_t record_bytes,
-                                        std::uint64_t particles);
   // The left particles' part of the section, sorted by time, then id.
   static void put_left_particles(StateWriter& out, std::vector<LeftParticle> left);
   void save_state_after_particles(StateWriter& out) const;

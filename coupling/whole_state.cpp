@@ -3,6 +3,7 @@
 #include <numeric>
 
 #include "coupling/simulation.hpp"
+#include "fluid/particle_section_head.hpp"
 #include "fluid/process_halo.hpp"
 
 namespace slide {
@@ -220,14 +221,6 @@ typename Simulation<D>::StateRecords Simulation<D>::state_records() const {
 }
 
 template <int D>
-void Simulation<D>::put_particle_section_head(StateWriter& out, bool correction, std::uint64_t record_bytes,
-                                              std::uint64_t particles) {
-  out.put<std::uint8_t>(correction ? 1 : 0);
-  out.put(record_bytes);
-  out.put(particles);
-}
-
-template <int D>
 void Simulation<D>::put_left_particles(StateWriter& out, std::vector<LeftParticle> left) {
   std::sort(left.begin(), left.end(), [](const LeftParticle& a, const LeftParticle& b) {
     return a.time < b.time || (a.time == b.time && a.id < b.id);
@@ -245,8 +238,9 @@ void Simulation<D>::put_left_particles(StateWriter& out, std::vector<LeftParticl
 template <int D>
 bool Simulation<D>::read_particle_section(StateReader& in, std::size_t made) {
   auto& P = domain_.particles;
-  const bool correction = in.get<std::uint8_t>() != 0;
-  const auto record_bytes = in.get<std::uint64_t>(), particles = in.get<std::uint64_t>();
+  const ParticleSectionHead head = ParticleSectionHead::get(in);
+  const bool correction = head.correction;
+  const std::uint64_t record_bytes = head.record_bytes, particles = head.particles;
   const std::size_t expected = ProcessHalo<D>::record_bytes(P) + sizeof(Vec<D>) + (correction ? sizeof(Mat<D>) : 0);
   if (record_bytes != expected || particles > made)
     throw std::runtime_error("the checkpoint's particles are not the scene's");

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "fluid/particle_section_head.hpp"
 #include "fluid/state_stream.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tools/checkpoint.hpp"
@@ -241,6 +242,26 @@ void expect_parts_of(std::uint64_t particles) {
   }
   EXPECT_THROW(tools::read_checkpoint_part(dir, 3, 3, false), std::invalid_argument);
   fs::remove_all(dir);
+}
+
+// The particle section's head, written and read in one place: u8 the matrices' flag, u64 record bytes, u64 records.
+TEST(Restart, TheParticleSectionsHeadIsItsFlagRecordBytesAndCountAndReadsBack) {
+  StateWriter out;
+  ParticleSectionHead{true, 77, 1234567890123ull}.put(out);
+  StateWriter expected;
+  expected.put<std::uint8_t>(1);
+  expected.put<std::uint64_t>(77);
+  expected.put<std::uint64_t>(1234567890123ull);
+  ASSERT_EQ(out.bytes().size(), 17u);
+  EXPECT_EQ(out.bytes(), expected.bytes());
+  StateReader in(out.bytes());
+  const ParticleSectionHead h = ParticleSectionHead::get(in);
+  EXPECT_TRUE(h.correction);
+  EXPECT_EQ(h.record_bytes, 77u);
+  EXPECT_EQ(h.particles, 1234567890123ull);
+  StateWriter without;
+  ParticleSectionHead{false, 5, 0}.put(without);
+  EXPECT_EQ(without.bytes()[0], 0);
 }
 
 TEST(Restart, ACheckpointReadInPartsHoldsEachPartsRecordsAndTheWholeRest) {

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "fluid/particle_section_head.hpp"
 #include "fluid/state_stream.hpp"
 
 namespace slide::tools {
@@ -183,9 +184,9 @@ CheckpointHeader read_checkpoint_header(const std::filesystem::path& run_dir) {
   return damaged_if_failed(path, [&] { return read_header(in, path); });
 }
 
-// The state's particle section (coupling/simulation.hpp, restore_state) begins: u8 gradient matrices present, u64
-// record bytes, u64 particles, then the records; the part keeps the head with its own count, its records and all
-// that follows them.
+// The state's particle section (coupling/simulation.hpp, restore_state) begins with its head
+// (fluid/particle_section_head.hpp), then the records; the part keeps the head with its own count, its records and
+// all that follows them.
 Checkpoint read_checkpoint_part(const std::filesystem::path& run_dir, std::uint64_t part, std::uint64_t parts,
                                 bool verify) {
   if (part >= parts) throw std::invalid_argument("read_checkpoint_part: part " + std::to_string(part) + " of " +
@@ -196,19 +197,17 @@ Checkpoint read_checkpoint_part(const std::filesystem::path& run_dir, std::uint6
   return damaged_if_failed(path, [&] {
     Checkpoint c;
     c.header = read_header(in, path);
-    const auto correction = in.get<std::uint8_t>();
-    const auto record_bytes = in.get<std::uint64_t>(), particles = in.get<std::uint64_t>();
-    const std::uint64_t records = in.at();
+    ParticleSectionHead head = ParticleSectionHead::get(in);
+    const std::uint64_t records = in.at(), record_bytes = head.record_bytes, particles = head.particles;
     if (record_bytes == 0) throw std::runtime_error("its particle section is malformed (records of 0 bytes)");
     if (particles > (in.body() - records) / record_bytes) throw std::runtime_error("the state is truncated");
     using Wide = unsigned __int128;  // (the products overflow 64 bits only for absurd counts, but need not at all)
     const auto first = static_cast<std::uint64_t>(Wide(particles) * part / parts);
     const auto end = static_cast<std::uint64_t>(Wide(particles) * (part + 1) / parts);
-    StateWriter head;
-    head.put(correction);
-    head.put(record_bytes);
-    head.put(end - first);
-    c.state.assign(head.bytes().begin(), head.bytes().end());
+    head.particles = end - first;
+    StateWriter part_head;
+    head.put(part_head);
+    c.state.assign(part_head.bytes().begin(), part_head.bytes().end());
     in.append(records + first * record_bytes, records + end * record_bytes, c.state);
     in.append(records + particles * record_bytes, in.body(), c.state);
     return c;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "fluid/particle_section_head.hpp"
 #include "fluid/process_halo.hpp"
 
 namespace slide::tools {
@@ -82,7 +83,7 @@ void write_records_alone(const Simulation<D>& sim, CheckpointFile& file) {
     const Records<D> r = sim.state_records(order, begin, std::min(begin + part, order.size()));
     if (begin == 0) {
       StateWriter head;
-      Simulation<D>::put_particle_section_head(head, r.correction, r.record_bytes, order.size());
+      ParticleSectionHead{r.correction, r.record_bytes, order.size()}.put(head);
       file.append(head.bytes().data(), head.bytes().size());
     }
     file.append(r.bytes.data(), r.bytes.size());
@@ -106,7 +107,7 @@ void write_records_shared(const Communicator& world, const Simulation<D>& sim, C
   world.sum(&particles, 1);
   if (file) {
     StateWriter head;
-    Simulation<D>::put_particle_section_head(head, correction, record_bytes, static_cast<std::uint64_t>(particles));
+    ParticleSectionHead{correction, record_bytes, static_cast<std::uint64_t>(particles)}.put(head);
     file->append(head.bytes().data(), head.bytes().size());
     file->append(held.data(), held.size());
   }
