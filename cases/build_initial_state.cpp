@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "cases/scene_build.hpp"
 #include "cases/solid_shape.hpp"
@@ -187,22 +188,30 @@ void keep_own_columns(SceneBuild<D>& b) {
 // settles as a fluid by design (coupling/relaxation.hpp) and may slump where it lies on a slope (measured: 10 dp
 // for the Mohr-Coulomb layer on its slope in tests/test_sediment_block.cpp).
 namespace {
+// What refuses water that moved further than water at rest does (its message), or nothing: at the end of the settling,
+// or by `time` s of it (a check while it settles: coupling/relaxation.hpp, refuse_if_not_at_rest).
 template <int D>
-void refuse_flowing_water(const Scene<D>& scene) {
-  const Relaxation& s = *scene.settling;
-  const double dp = scene.particle_spacing;
-  const auto& phases = scene.simulation->phases;
-  const double limit_dp = 5.0 + 0.01 * scene.deepest_water / dp;
+std::optional<std::string> flowing_water(const Relaxation& s, const Simulation<D>& sim, double dp, double deepest_water,
+                                         std::optional<double> time) {
+  const double limit_dp = 5.0 + 0.01 * deepest_water / dp;
   for (std::size_t ph = 0; ph < s.largest_shift_by_phase.size(); ++ph) {
     const double shift_dp = s.largest_shift_by_phase[ph] / dp;
-    if (!std::holds_alternative<Newtonian>(phases[ph].rheology) || shift_dp <= limit_dp) continue;
-    throw SceneError("method.initial_state",
-                     fmt::format("the {} moved up to {:.3g} dp while it settled ({}; water at rest moves less "
-                                 "than {:.3g} dp): it is not at rest; hold it while it settles with a gate "
-                                 "(walls[].gate), or start it without settling (initial_state: lattice, or "
-                                 "hydrostatic with lattice: square)",
-                                 phases[ph].name, shift_dp, s.largest_shift_where_by_phase.at(ph), limit_dp));
+    if (!std::holds_alternative<Newtonian>(sim.phases[ph].rheology) || shift_dp <= limit_dp) continue;
+    const std::string when =
+        time ? fmt::format("by t = {:.3g} s of its {:.3g} s of settling", *time, s.duration) : "while it settled";
+    return fmt::format("the {} moved up to {:.3g} dp {} ({}; water at rest moves less than {:.3g} dp): it is not at "
+                       "rest; hold it while it settles with a gate (walls[].gate), or start it without settling "
+                       "(initial_state: lattice, or hydrostatic with lattice: square)",
+                       sim.phases[ph].name, shift_dp, when, s.largest_shift_where_by_phase.at(ph), limit_dp);
   }
+  return std::nullopt;
+}
+
+template <int D>
+void refuse_flowing_water(const Scene<D>& scene) {
+  const auto why = flowing_water(*scene.settling, *scene.simulation, scene.particle_spacing, scene.deepest_water,
+                                 std::nullopt);
+  if (why) throw SceneError("method.initial_state", *why);
 }
 
 // After settling (or without it), the gates go.
@@ -229,7 +238,12 @@ void plan_settling(SceneBuild<D>& b) {
   b.scene->pending_gate_ids = b.gate_ids;
   if (b.initial_state != InitialState::settled) return;
   const YAML::Node m = r["method"];
-  SettlingPlan<D> plan{m["settling_time"].as<double>(), m["settling_damping"].as<double>(), {}};
+  SettlingPlan<D> plan{m["settling_time"].as<double>(), m["settling_damping"].as<double>(), {}, {}};
+  // Checked as it settles too, so that water not at rest is refused when it is found, not at the end.
+  plan.refuse_if_not_at_rest = [sim = b.sim.get(), dp = b.dp, deepest = b.scene->deepest_water](
+                                   const Relaxation& so_far, double time) {
+    if (const auto why = flowing_water(so_far, *sim, dp, deepest, time)) throw std::runtime_error(*why);
+  };
   const Vec<D>& g = b.sim->options.gravity;
   const Vec<D> down = g.norm() > 0.0 ? Vec<D>(g.normalized()) : Vec<D>(-Vec<D>::Unit(D - 1));
   for (const auto& s : b.slides) {

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "coupling/advance.hpp"
 #include "coupling/position_text.hpp"
@@ -30,91 +32,10 @@ namespace {
 // its basal friction held it with that much more at first.
 }  // namespace
 
-template <int D>
-class Settling<D>::Observer : public StepObserver<D> {
- public:
-  Observer(Relaxation& out, RigidBodies<D>* floating, StartPositions<D>& start, const std::vector<HeldPhase<D>>& held)
-      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(start) {
-    for (const auto& h : held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
-    holds_ = !held.empty();  // the same on every process: the scene's plan
-  }
-  void after_step(Simulation<D>& sim, double dt) override {
-    auto& P = sim.particles();
-    // Particles change process only where the particles are re-sorted (the same steps on every process).
-    if (holds_ && sim.neighbor_rebuilds() != rebuilds_followed_) {
-      start_.follow(P, sim.domain().distributed() ? sim.domain().communicator() : nullptr);
-      rebuilds_followed_ = sim.neighbor_rebuilds();
-    }
-    for (std::size_t i = 0; i < P.real_count(); ++i)
-      if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
-        const Vec<D>& x0 = start_.of(P.id[i]);
-        const Vec<D>& free = free_[P.phase[i]];
-        P.position[i] = x0 + (P.position[i] - x0).dot(free) * free;
-        P.velocity[i] = P.velocity[i].dot(free) * free;
-      }
-    // The next step reads the held particles' ghosts before it refreshes them (found in review: on several processes a
-    // neighbour's copy kept the values from before the hold; periodic and mirror images did on one).
-    if (holds_) sim.refresh_moved_ghosts();
-    out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
-    if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
-  }
-
- private:
-  Relaxation& out_;
-  RigidBodies<D>* floating_;
-  std::vector<bool> held_;
-  bool holds_ = false;
-  std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
-  StartPositions<D>& start_;  // Settling's
-  long rebuilds_followed_ = -1;
-};
-
-
-
-template <int D>
-Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
-  out_.duration = plan.duration;
-  out_.damping_rate = plan.damping_rate;
-  start_.emplace(sim.particles());  // real particles (periodic ghosts come and go)
-  // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
-  // bodies are detached and their particles stand still as walls.
-  bodies_ = sim.detach_bodies();
-  if (bodies_)
-    for (const auto& m : bodies_->motion)
-      floating_ = floating_ || (m.mode == BodyMotion::Mode::free && m.free_while_settling);
-  if (floating_) {
-    bodies_->set_settling(true);
-    sim.attach_bodies(bodies_);
-  }
-  saved_damping_rate_ = sim.options.velocity_damping_rate;
-  sim.set_velocity_damping(plan.damping_rate);
-  sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
-  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, *start_, plan.held);
-}
-
-template <int D>
-Settling<D>::~Settling() = default;
-
-template <int D>
-AdvanceResult Settling<D>::advance(const std::vector<StepObserver<D>*>& observers) {
-  std::vector<StepObserver<D>*> all = observers;
-  all.push_back(observer_.get());
-  const AdvanceResult result = slide::advance<D>(sim_, out_.duration, all);
-  if (result.instability)
-    throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));
-  return result;
-}
-
-template <int D>
-void Settling<D>::save_state(StateWriter& out) const { out.put(out_.largest_speed); }
-
-template <int D>
-void Settling<D>::restore_state(StateReader& in) { in.get(out_.largest_speed); }
-
 namespace {
 
-// Several processes (fluid/domain.hpp) settle the scene shared among them: what finish() reports is the whole scene's,
-// the same as on one process. comm: the simulation's (null on one process).
+// Several processes (fluid/domain.hpp) settle the scene shared among them: what the checks and finish() report is the
+// whole scene's, the same as on one process. comm: the simulation's (null on one process).
 
 // The refusal of water that left the domain while settling: how many left, and the first (by time, then id).
 template <int D>
@@ -139,6 +60,16 @@ std::string left_while_settling(const Simulation<D>& sim, std::int64_t count, co
                      "lattice)",
                      count, count == 1 ? "" : "s", all.empty() ? ParticleId(0) : ParticleId(all[first + 1]),
                      all.empty() ? 0.0 : all[first], position_text(x));
+}
+
+// Water at rest stays in the domain: what left it while settling flowed off an open edge. The refusal's message, or
+// none (a collective on several processes).
+template <int D>
+std::optional<std::string> water_that_left(const Simulation<D>& sim, const Communicator* comm) {
+  std::int64_t left = static_cast<std::int64_t>(sim.left_the_domain().size());
+  if (comm) comm->sum(&left, 1);
+  if (left == 0) return std::nullopt;
+  return left_while_settling(sim, left, comm);
 }
 
 // How far each particle moved while settling: the largest of all, and each phase's fluid particle that moved the
@@ -190,13 +121,135 @@ void find_largest_shifts(const Simulation<D>& sim, const StartPositions<D>& star
 }  // namespace
 
 template <int D>
+class Settling<D>::Observer : public StepObserver<D> {
+ public:
+  Observer(Relaxation& out, RigidBodies<D>* floating, StartPositions<D>& start, const SettlingPlan<D>& plan)
+      : out_(out), floating_(floating), held_(256, false), free_(256, Vec<D>::Zero()), start_(start),
+        refuse_if_not_at_rest_(plan.refuse_if_not_at_rest), check_interval_(plan.duration / 20) {
+    for (const auto& h : plan.held) held_[h.phase] = true, free_[h.phase] = h.free_direction;
+    holds_ = !plan.held.empty();  // the same on every process: the scene's plan
+  }
+  // The next check of the water at rest is at the first twentieth of the duration after `time` (a run resumed while
+  // settling checks at the same steps as the straight run).
+  void begin_at(double time) { next_check_ = next_check_after(time); }
+  // Whether the last check found the water not at rest (a checkpoint keeps it: a resumed run refuses where the
+  // straight run would).
+  bool found_not_at_rest() const { return found_not_at_rest_; }
+  void set_found_not_at_rest(bool found) { found_not_at_rest_ = found; }
+  void after_step(Simulation<D>& sim, double dt) override {
+    auto& P = sim.particles();
+    // Particles change process only where the particles are re-sorted (the same steps on every process).
+    if (holds_ && sim.neighbor_rebuilds() != rebuilds_followed_) {
+      start_.follow(P, sim.domain().distributed() ? sim.domain().communicator() : nullptr);
+      rebuilds_followed_ = sim.neighbor_rebuilds();
+    }
+    for (std::size_t i = 0; i < P.real_count(); ++i)
+      if (P.kind[i] == Kind::fluid && held_[P.phase[i]]) {
+        const Vec<D>& x0 = start_.of(P.id[i]);
+        const Vec<D>& free = free_[P.phase[i]];
+        P.position[i] = x0 + (P.position[i] - x0).dot(free) * free;
+        P.velocity[i] = P.velocity[i].dot(free) * free;
+      }
+    // The next step reads the held particles' ghosts before it refreshes them (found in review: on several processes a
+    // neighbour's copy kept the values from before the hold; periodic and mirror images did on one).
+    if (holds_) sim.refresh_moved_ghosts();
+    out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
+    if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
+    if (refuse_if_not_at_rest_ && sim.time() >= next_check_) check_at_rest(sim);
+  }
+
+ private:
+  Relaxation& out_;
+  RigidBodies<D>* floating_;
+  std::vector<bool> held_;
+  bool holds_ = false;
+  std::vector<Vec<D>> free_;   // by phase: the held phase's free direction (unit)
+  StartPositions<D>& start_;  // Settling's
+  long rebuilds_followed_ = -1;
+  std::function<void(const Relaxation&, double)> refuse_if_not_at_rest_;
+  double check_interval_ = 0.0, next_check_ = 0.0;  // s
+
+  double next_check_after(double time) const { return (std::floor(time / check_interval_) + 1.0) * check_interval_; }
+  bool found_not_at_rest_ = false;  // at the last check
+
+  // The water that left the domain so far, then the shifts so far (a collective on several processes, at the same
+  // step on every one: their clocks agree). Refused where the water was found not at rest at two checks running: an
+  // unstable method moves the water before it blows up, and the interval's wait lets the instability, where there is
+  // one, be named as such (a sweep's stability map tells the two apart: the difference gradient behind the gated dam
+  // break's gate moved the water past its bound at 0.15 s and collapsed at 0.165 s).
+  void check_at_rest(Simulation<D>& sim) {
+    next_check_ = next_check_after(sim.time());
+    const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
+    std::optional<std::string> why = water_that_left(sim, comm);
+    if (!why) {
+      start_.follow(sim.particles(), comm);
+      Relaxation so_far = out_;
+      find_largest_shifts(sim, start_, comm, so_far);
+      try {
+        refuse_if_not_at_rest_(so_far, sim.time());
+      } catch (const std::runtime_error& e) {
+        why = e.what();
+      }
+    }
+    if (why && found_not_at_rest_) throw std::runtime_error(*why);
+    found_not_at_rest_ = why.has_value();
+  }
+};
+
+
+
+template <int D>
+Settling<D>::Settling(Simulation<D>& sim, SettlingPlan<D> plan) : sim_(sim) {
+  out_.duration = plan.duration;
+  out_.damping_rate = plan.damping_rate;
+  start_.emplace(sim.particles());  // real particles (periodic ghosts come and go)
+  // Bodies that float with the water take part (coupling/rigid_bodies.hpp, set_settling); when none does, the
+  // bodies are detached and their particles stand still as walls.
+  bodies_ = sim.detach_bodies();
+  if (bodies_)
+    for (const auto& m : bodies_->motion)
+      floating_ = floating_ || (m.mode == BodyMotion::Mode::free && m.free_while_settling);
+  if (floating_) {
+    bodies_->set_settling(true);
+    sim.attach_bodies(bodies_);
+  }
+  saved_damping_rate_ = sim.options.velocity_damping_rate;
+  sim.set_velocity_damping(plan.damping_rate);
+  sim.set_rheology_suspended(true);  // sediment settles as a fluid (Simulation::set_rheology_suspended)
+  observer_ = std::make_unique<Observer>(out_, floating_ ? bodies_.get() : nullptr, *start_, plan);
+}
+
+template <int D>
+Settling<D>::~Settling() = default;
+
+template <int D>
+AdvanceResult Settling<D>::advance(const std::vector<StepObserver<D>*>& observers) {
+  std::vector<StepObserver<D>*> all = observers;
+  all.push_back(observer_.get());
+  observer_->begin_at(sim_.time());
+  const AdvanceResult result = slide::advance<D>(sim_, out_.duration, all);
+  if (result.instability)
+    throw std::runtime_error(settling_instability_message(result.instability->time, result.instability->reason));
+  return result;
+}
+
+template <int D>
+void Settling<D>::save_state(StateWriter& out) const {
+  out.put(out_.largest_speed);
+  out.put<std::uint8_t>(observer_->found_not_at_rest() ? 1 : 0);
+}
+
+template <int D>
+void Settling<D>::restore_state(StateReader& in) {
+  in.get(out_.largest_speed);
+  observer_->set_found_not_at_rest(in.get<std::uint8_t>() != 0);
+}
+
+template <int D>
 Relaxation Settling<D>::finish() {
   auto& sim = sim_;
   const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
-  // Water at rest stays in the domain: what left it while settling flowed off an open edge.
-  std::int64_t left = static_cast<std::int64_t>(sim.left_the_domain().size());
-  if (comm) comm->sum(&left, 1);
-  if (left > 0) throw std::runtime_error(left_while_settling(sim, left, comm));
+  if (const auto why = water_that_left(sim, comm)) throw std::runtime_error(*why);
   Relaxation out = out_;
   out.steps = sim.step_count();
   out.residual_speed = sim.max_fluid_speed();

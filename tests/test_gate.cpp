@@ -99,6 +99,14 @@ TEST(Gate, AColumnThatNothingHoldsIsNotSettled) {
   EXPECT_NE(r.output.find("not at rest"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("(particle "), std::string::npos) << r.output;  // which one moved the most, from where
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << r.output;  // nothing written, not even the folder
+  // Refused when a check finds it (every twentieth of the 0.5 s: coupling/relaxation.hpp), not at the end: the
+  // column has moved 5.2 dp, its bound, well before (at 0.15 s, measured at stop 65).
+  const auto by = r.output.find("by t = ");
+  ASSERT_NE(by, std::string::npos) << r.output;
+  const double at = std::stod(r.output.substr(by + 7));
+  EXPECT_LT(at, 0.5) << r.output;
+  EXPECT_NEAR(at / 0.025, std::round(at / 0.025), 0.05) << r.output;  // at a check (printed to 3 digits)
+  EXPECT_NE(r.output.find("s of its 0.5 s of settling"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -20,8 +20,9 @@ constexpr char kMagic[8] = {'S', 'L', 'I', 'D', 'E', 'C', 'K', 'P'};
 // taken while settling (issue 30); 5: ghosts as a flip and an offset (mirror images, stop 42); 6: the rigid journal's
 // solids say whether they are kinematic (3-D prescribed motion, stop 43); 7: particle ids are 64-bit (issue 32); 8: a
 // ghost carries its source's id (issue 32); 9: the particles in id order without their ghosts, the state to the end
-// of the file (issue 32: a checkpoint written from every process's own particles).
-constexpr std::uint32_t kFormat = 9;
+// of the file (issue 32: a checkpoint written from every process's own particles); 10: a checkpoint taken while
+// settling says whether its last check found the water not at rest (stop 65).
+constexpr std::uint32_t kFormat = 10;
 
 // FNV-1a, 64 bits: enough to tell a torn or altered file, not a guard against tampering. `h`: the hash of what came
 // before (a file hashed in parts).
