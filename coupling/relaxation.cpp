@@ -131,7 +131,7 @@ class Settling<D>::Observer : public StepObserver<D> {
   }
   // The next check of the water at rest is at the first twentieth of the duration after `time` (a run resumed while
   // settling checks at the same steps as the straight run).
-  void begin_at(double time) { next_check_ = next_check_after(time); }
+  void begin_at(double time) { checks_passed_ = checks_passed_by(time); }
   // Whether the last check found the water not at rest (a checkpoint keeps it: a resumed run refuses where the
   // straight run would).
   bool found_not_at_rest() const { return found_not_at_rest_; }
@@ -155,7 +155,7 @@ class Settling<D>::Observer : public StepObserver<D> {
     if (holds_) sim.refresh_moved_ghosts();
     out_.largest_speed = std::max(out_.largest_speed, sim.max_fluid_speed());
     if (floating_) floating_->damp_floating(std::exp(-out_.damping_rate * dt));
-    if (refuse_if_not_at_rest_ && sim.time() >= next_check_) check_at_rest(sim);
+    if (refuse_if_not_at_rest_ && check_time(checks_passed_ + 1) <= sim.time()) check_at_rest(sim);
   }
 
  private:
@@ -167,9 +167,17 @@ class Settling<D>::Observer : public StepObserver<D> {
   StartPositions<D>& start_;  // Settling's
   long rebuilds_followed_ = -1;
   std::function<void(const Relaxation&, double)> refuse_if_not_at_rest_;
-  double check_interval_ = 0.0, next_check_ = 0.0;  // s
+  double check_interval_ = 0.0;  // s
+  long checks_passed_ = 0;        // the checks whose times lie at or before the clock's
 
-  double next_check_after(double time) const { return (std::floor(time / check_interval_) + 1.0) * check_interval_; }
+  // Check k is due at k times the interval: one product, the same in a straight and a resumed run.
+  double check_time(long k) const { return static_cast<double>(k) * check_interval_; }
+  long checks_passed_by(double time) const {
+    long k = static_cast<long>(std::floor(time / check_interval_));
+    while (k > 0 && check_time(k) > time) --k;
+    while (check_time(k + 1) <= time) ++k;
+    return k;
+  }
   bool found_not_at_rest_ = false;  // at the last check
 
   // The water that left the domain so far, then the shifts so far (a collective on several processes, at the same
@@ -178,7 +186,7 @@ class Settling<D>::Observer : public StepObserver<D> {
   // one, be named as such (a sweep's stability map tells the two apart: the difference gradient behind the gated dam
   // break's gate moved the water past its bound at 0.15 s and collapsed at 0.165 s).
   void check_at_rest(Simulation<D>& sim) {
-    next_check_ = next_check_after(sim.time());
+    checks_passed_ = checks_passed_by(sim.time());
     const Communicator* comm = sim.domain().distributed() ? sim.domain().communicator() : nullptr;
     std::optional<std::string> why = water_that_left(sim, comm);
     if (!why) {

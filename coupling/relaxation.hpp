@@ -58,8 +58,9 @@ inline std::optional<SettlingInstability> parse_settling_instability(const std::
 }
 
 // Settles for `duration` seconds with velocities damped as exp(-damping_rate t). Throws std::runtime_error if the
-// settling goes unstable (its message: settling_instability_message above). On return the simulation is at time 0
-// with every fluid velocity zero.
+// settling goes unstable (its message: settling_instability_message above), or the water is found not at rest while
+// it settles (SettlingPlan::refuse_if_not_at_rest, water that left the domain; relax_at_rest leaves the end's checks
+// of the shifts to its caller). On return the simulation is at time 0 with every fluid velocity zero.
 // held: fluid particles of these phases (deformable slides) are held while the water settles around them, as a
 // rigid slide is held: put back after every step, but free along their phase's unit `free_direction` (the normal of
 // the face the slide rests on, or g), so that they compress to their hydrostatic pressure (relaxation.cpp).
@@ -69,10 +70,11 @@ struct HeldPhase {
   std::uint8_t phase = 0;
   Vec<D> free_direction = -Vec<D>::Unit(D - 1);  // down
 };
-// refuse_if_not_at_rest: called at every twentieth of the duration with what the settling found so far (the largest
-// shifts) and the settling's time; it throws std::runtime_error where the water is not at rest, which stops the
-// settling there rather than at its end (an Enet & Grilli case at dp 0.03 moved 42 dp by its end, 1.5 hours on, and
-// already 46 dp at 0.36 s of its 4 s). Not set: no check before the end.
+// refuse_if_not_at_rest: called at the first step at or after each twentieth of the duration, unless water has left
+// the domain by then, with what the settling found so far (the largest shifts) and the settling's time; it throws
+// std::runtime_error where the water is not at rest. Two checks running that find it (water that left, or this
+// callback's refusal) stop the settling there rather than at its end (an Enet & Grilli case at dp 0.03 moved 42 dp
+// by its end, 1.5 hours on two threads, and 9.5 dp by 1 s of its 4 s). Not set: no check before the end.
 template <int D>
 struct SettlingPlan {
   double duration = 0.0;      // s

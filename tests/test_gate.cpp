@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "coupling/advance.hpp"
+#include "coupling/relaxation.hpp"
+#include "fluid/state_stream.hpp"
 #include "fluid/lattice.hpp"
 #include "tests/cli_helpers.hpp"
 #include "tests/scene_runner.hpp"
@@ -107,6 +109,39 @@ TEST(Gate, AColumnThatNothingHoldsIsNotSettled) {
   EXPECT_LT(at, 0.5) << r.output;
   EXPECT_NEAR(at / 0.025, std::round(at / 0.025), 0.05) << r.output;  // at a check (printed to 3 digits)
   EXPECT_NE(r.output.find("s of its 0.5 s of settling"), std::string::npos) << r.output;
+}
+
+// Settling stops at the second check running that finds its water not at rest; a checkpoint taken between the two
+// keeps the first's finding (coupling/relaxation.cpp, Settling::save_state), so that a resumed run refuses where the
+// straight one does. The ungated column (checks every 0.025 s of its 0.5 s) is first found at 0.15 s (test above).
+TEST(Gate, TheFirstFindingOfWaterNotAtRestIsKeptInTheSettlingsState) {
+  const auto dir = fresh_directory("settling_finding");
+  write_file(dir / "s.yaml", gated_column("settled", false));
+  struct StopAt : StepObserver<2> {
+    double time;
+    explicit StopAt(double t) : time(t) {}
+    bool before_step(const Simulation<2>& sim) override { return sim.time() < time; }
+  };
+  const auto finding_at = [&](double stop) {
+    auto scene = cases::build_scene<2>(cases::load_scene(dir / "s.yaml", {}), "column", dir,
+                                       cases::StartOfRun::left_to_caller);
+    Settling<2> settling(*scene->simulation, *scene->pending_settling);
+    StopAt at(stop);
+    EXPECT_EQ(settling.advance({&at}).outcome, AdvanceResult::Outcome::stopped);
+    StateWriter out;
+    settling.save_state(out);
+    // Read back into another settling, written again: the same bytes.
+    Settling<2> other(*scene->simulation, *scene->pending_settling);
+    StateReader in(out.bytes());
+    other.restore_state(in);
+    StateWriter again;
+    other.save_state(again);
+    EXPECT_EQ(again.bytes(), out.bytes());
+    return out.bytes().back();
+  };
+  EXPECT_EQ(finding_at(0.14), 0);  // checked at 0.025 ... 0.125 s: at rest so far
+  EXPECT_EQ(finding_at(0.16), 1);  // found at 0.15 s, refused at 0.175 s
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -622,7 +622,7 @@ std::optional<int> settle_before_the_run(PreparedRun<D>& run, const RunArguments
       if (settling.advance(observers).outcome == AdvanceResult::Outcome::stopped)
         return stop_while_settling(run, sim, settling, world_of(args));
       settled = settling.finish();
-    } catch (const std::runtime_error& e) {  // it went unstable, or water left the domain
+    } catch (const std::runtime_error& e) {  // it went unstable, or its water left the domain or is not at rest
       std::cerr << (args.quiet ? "" : "\n") << refused << e.what() << "\n";
       return 2;
     }
