@@ -74,7 +74,7 @@ struct HeldPhase {
 // the domain by then, with what the settling found so far (the largest shifts) and the settling's time; it throws
 // std::runtime_error where the water is not at rest. Two checks running that find it (water that left, or this
 // callback's refusal) stop the settling there rather than at its end (an Enet & Grilli case at dp 0.03 moved 42 dp
-// by its end, 1.5 hours on two threads, and 9.5 dp by 1 s of its 4 s). Not set: no check before the end.
+// by its end, about 80 minutes on two threads, and 9.5 dp by 1 s of its 4 s). Not set: no check before the end.
 template <int D>
 struct SettlingPlan {
   double duration = 0.0;      // s
